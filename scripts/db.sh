@@ -1,0 +1,145 @@
+#!/usr/bin/env bash
+# Private MariaDB instance for fleetmap: own data dir, unix socket, loopback port.
+#
+#   scripts/db.sh start     create (first time) and start; load sql/; write fleetmap.conf
+#   scripts/db.sh stop      clean shutdown
+#   scripts/db.sh status    running or not, where
+#   scripts/db.sh sql ARGS  mariadb client as the instance administrator on the project database
+#
+# Settings (environment):
+#   FLEETMAP_HOME   instance folder (default: <checkout>/.fleetmap)
+#   FLEETMAP_PORT   loopback TCP port (default: 33306)
+#   FLEETMAP_DB     database name (default: fleetmap)
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "$0")/.." && pwd)"
+HOME_DIR="${FLEETMAP_HOME:-$ROOT/.fleetmap}"
+PORT="${FLEETMAP_PORT:-33306}"
+DB="${FLEETMAP_DB:-fleetmap}"
+DATA="$HOME_DIR/data"
+SOCK="$HOME_DIR/mysqld.sock"
+PIDF="$HOME_DIR/mysqld.pid"
+LOG="$HOME_DIR/mysqld.log"
+CONF="$HOME_DIR/fleetmap.conf"
+ME="$(id -un)"
+
+die() { echo "db.sh: $*" >&2; exit 1; }
+
+# The administrator logs in over the socket as the OS user (unix_socket auth, no password).
+admin() { mariadb --no-defaults --socket="$SOCK" -u "$ME" "$@"; }
+
+running() { [ -S "$SOCK" ] && mariadb-admin --no-defaults --socket="$SOCK" -u "$ME" ping >/dev/null 2>&1; }
+
+# One random password per account, generated once and kept in fleetmap.conf.
+password_for() {
+  local role="$1" pw=""
+  [ -f "$CONF" ] && pw="$(awk -v s="[$role]" '$0==s{f=1;next} /^\[/{f=0} f&&$1=="password"{print $3}' "$CONF")"
+  [ -n "$pw" ] || pw="$(head -c 18 /dev/urandom | base64 | tr -d '/+=')"
+  echo "$pw"
+}
+
+write_conf() {
+  local spw opw ipw
+  spw="$(password_for server)"; opw="$(password_for operator)"; ipw="$(password_for inspector)"
+  umask 077
+  cat > "$CONF.tmp" <<CONF
+# fleetmap connection settings for the private instance (written by scripts/db.sh).
+# Every program reads this file; FLEETMAP_* variables and flags override it.
+[database]
+host = 127.0.0.1
+port = $PORT
+socket = $SOCK
+name = $DB
+
+[server]
+user = fleetmap_server
+password = $spw
+
+[operator]
+user = fleetmap_operator
+password = $opw
+
+[inspector]
+user = fleetmap_inspector
+password = $ipw
+CONF
+  mv "$CONF.tmp" "$CONF"
+}
+
+load_sql() {
+  admin -e "CREATE DATABASE IF NOT EXISTS \`$DB\` CHARACTER SET utf8mb4 COLLATE utf8mb4_unicode_ci"
+  for f in "$ROOT"/sql/[0-9]*.sql; do
+    admin "$DB" < "$f" || die "loading $f failed"
+  done
+  write_conf
+  local role
+  for role in server operator inspector; do
+    local pw; pw="$(password_for "$role")"
+    admin "$DB" <<SQL
+CREATE USER IF NOT EXISTS 'fleetmap_$role'@'%';
+ALTER USER 'fleetmap_$role'@'%' IDENTIFIED BY '$pw';
+GRANT fleetmap_${role}_role TO 'fleetmap_$role'@'%';
+SET DEFAULT ROLE fleetmap_${role}_role FOR 'fleetmap_$role'@'%';
+SQL
+  done
+}
+
+start() {
+  mkdir -p "$HOME_DIR"
+  if running; then
+    load_sql
+    echo "db.sh: already running (socket $SOCK, port $PORT)"
+    return
+  fi
+  if [ ! -d "$DATA/mysql" ]; then
+    echo "db.sh: creating data directory $DATA"
+    rm -rf "$DATA"
+    # --skip-test-db: no anonymous accounts (SPEC 9).
+    mariadb-install-db --no-defaults --datadir="$DATA" --user="$ME" \
+      --auth-root-authentication-method=socket --skip-test-db >"$HOME_DIR/install.log" 2>&1 \
+      || die "mariadb-install-db failed, see $HOME_DIR/install.log"
+  fi
+  local mariadbd; mariadbd="$(command -v mariadbd || echo /usr/sbin/mariadbd)"
+  "$mariadbd" --no-defaults --user="$ME" --datadir="$DATA" --socket="$SOCK" \
+    --port="$PORT" --bind-address=127.0.0.1 --skip-name-resolve \
+    --pid-file="$PIDF" --log-error="$LOG" \
+    --character-set-server=utf8mb4 --collation-server=utf8mb4_unicode_ci \
+    --max-allowed-packet=64M --innodb-buffer-pool-size=512M --innodb-log-file-size=256M \
+    --transaction-isolation=READ-COMMITTED >/dev/null 2>&1 &
+  local i
+  for i in $(seq 1 120); do
+    running && break
+    sleep 0.25
+  done
+  running || die "server did not answer within 30 s, see $LOG"
+  load_sql
+  echo "db.sh: running (socket $SOCK, port $PORT, database $DB, config $CONF)"
+}
+
+stop() {
+  if ! running; then echo "db.sh: not running"; return; fi
+  local pid=""; [ -f "$PIDF" ] && pid="$(cat "$PIDF")"
+  mariadb-admin --no-defaults --socket="$SOCK" -u "$ME" shutdown
+  if [ -n "$pid" ]; then
+    local i; for i in $(seq 1 120); do kill -0 "$pid" 2>/dev/null || break; sleep 0.25; done
+  fi
+  echo "db.sh: stopped"
+}
+
+status() {
+  if running; then
+    echo "running: socket $SOCK, port $PORT, database $DB, data $DATA, config $CONF"
+  else
+    echo "not running (data $DATA)"; return 3
+  fi
+}
+
+case "${1:-}" in
+  start) start ;;
+  stop) stop ;;
+  status) status ;;
+  sql) shift; running || die "not running; use: $0 start"; admin "$DB" "$@" ;;
+  conf) echo "$CONF" ;;
+  -h|--help|help|"") sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//' ;;
+  *) die "unknown command '$1' (start|stop|status|sql|conf)" ;;
+esac

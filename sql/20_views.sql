@@ -1,0 +1,50 @@
+-- Views for people with SQL (SPEC 4) and the robot's own answers (SPEC 5.1).
+-- Idempotent (CREATE OR REPLACE).
+
+-- Every stored map with its border as a polygon.
+CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_maps AS
+  SELECT id, name, mx1, my1, mx4, my4, border, source, obstacles, segments, imported_at
+  FROM maps;
+
+-- Map segments with their obstacle and geometry: what QGIS or ogrinfo reads.
+CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_segments AS
+  SELECT s.id, m.name AS map, o.obstacle_id, o.st, o.semantic AS obstacle_semantic,
+         s.ord, s.ax, s.ay, s.bx, s.`by`, s.h, s.in_out, s.semantic, s.note, s.geom
+  FROM segments s
+  JOIN obstacles o ON o.map_id = s.map_id AND o.ord = s.obstacle_ord
+  JOIN maps m ON m.id = s.map_id;
+
+CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_obstacles AS
+  SELECT m.name AS map, o.ord, o.obstacle_id, o.st, o.semantic, o.cx, o.cy, o.r
+  FROM obstacles o JOIN maps m ON m.id = o.map_id;
+
+-- Current robot status: state, last pose, last seen, active task.
+CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_robot_status AS
+  SELECT r.id AS robot_id, r.db_user AS name, m.name AS map, r.state, r.x, r.y, r.theta, r.v,
+         r.last_seen, t.id AS task_id, t.state AS task_state, t.goal_x, t.goal_y
+  FROM robots r
+  LEFT JOIN maps m ON m.id = r.map_id
+  LEFT JOIN tasks t ON t.id = (SELECT MAX(t2.id) FROM tasks t2 WHERE t2.robot_id = r.id)
+  WHERE r.removed_at IS NULL;
+
+CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_tasks AS
+  SELECT t.id, r.db_user AS robot, t.goal_x, t.goal_y, t.state, t.reason, t.created_at, t.updated_at
+  FROM tasks t JOIN robots r ON r.id = t.robot_id;
+
+-- Trajectories as points with timestamps.
+CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_trajectory_points AS
+  SELECT tr.id, r.db_user AS robot, tr.t, tr.x, tr.y, tr.theta, tr.v, tr.w, tr.pos
+  FROM trajectories tr JOIN robots r ON r.id = tr.robot_id;
+
+-- Protocol traffic (payloads shown by size; SELECT UNCOMPRESS on sa for the text).
+CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_requests AS
+  SELECT id, robot_id, db_user, op, params, OCTET_LENGTH(payload) AS payload_bytes, created_at FROM rr;
+CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_answers AS
+  SELECT id, robot_id, db_user, request_id, op, params, OCTET_LENGTH(payload) AS payload_bytes, created_at FROM sa;
+
+-- Each robot sees and deletes only its own answers (SPEC 5.1, 9). Safe only with the
+-- account-name rule and the binary no-pad collation of sa.db_user.
+CREATE OR REPLACE SQL SECURITY DEFINER VIEW sa_mine AS
+  SELECT id, robot_id, db_user, request_id, op, params, payload, created_at
+  FROM sa
+  WHERE db_user = SUBSTRING_INDEX(USER(), '@', 1);
