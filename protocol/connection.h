@@ -1,0 +1,44 @@
+#pragma once
+// Opening a MySQL++ connection from DbSettings, with the session settings every
+// fleetmap program relies on.
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <mysql++/mysql++.h>
+
+#include "protocol/db_settings.h"
+
+namespace fleetmap {
+
+// A database problem a person can act on: names the server and account.
+class DbError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Connects (utf8mb4, READ COMMITTED: a server's SELECT ... FOR UPDATE must not take gap
+// locks that block robots' inserts, SPEC 9). Throws DbError.
+std::unique_ptr<mysqlpp::Connection> connect(const DbSettings& s);
+
+// Where a connection goes, for logs: "fleetmap_operator@/path/sock/fleetmap".
+std::string describe(const DbSettings& s);
+
+// Runs statements that return no rows (START TRANSACTION, COMMIT, ...).
+void execute(mysqlpp::Connection& c, const std::string& sql);
+
+// RAII transaction: rolls back unless commit() was called.
+class Transaction {
+ public:
+  explicit Transaction(mysqlpp::Connection& c);
+  ~Transaction();
+  void commit();
+  Transaction(const Transaction&) = delete;
+  Transaction& operator=(const Transaction&) = delete;
+
+ private:
+  mysqlpp::Connection& c_;
+  bool done_ = false;
+};
+
+}  // namespace fleetmap

@@ -1,0 +1,114 @@
+#include "protocol/db_settings.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace fleetmap {
+namespace {
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+unsigned parse_port(const std::string& v, const std::string& where) {
+  try {
+    size_t used = 0;
+    const unsigned long p = std::stoul(v, &used);
+    if (used == v.size() && p > 0 && p < 65536) return static_cast<unsigned>(p);
+  } catch (const std::exception&) {
+  }
+  throw std::runtime_error(where + ": expected a port number 1..65535, got '" + v + "'");
+}
+
+std::string read_file(const std::string& path, const std::string& what) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + what + " '" + path + "'");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+const char* env(const char* name) {
+  const char* v = std::getenv(name);
+  return (v && *v) ? v : nullptr;
+}
+
+}  // namespace
+
+const char* section_name(Role role) {
+  switch (role) {
+    case Role::Server: return "server";
+    case Role::Operator: return "operator";
+    case Role::Inspector: return "inspector";
+    case Role::Robot: return "robot";
+  }
+  return "";
+}
+
+std::optional<std::string> find_config_file() {
+  namespace fs = std::filesystem;
+  if (const char* c = env("FLEETMAP_CONFIG")) return std::string(c);
+  if (const char* h = env("FLEETMAP_HOME"))
+    if (fs::exists(fs::path(h) / "fleetmap.conf")) return (fs::path(h) / "fleetmap.conf").string();
+  for (const char* p : {".fleetmap/fleetmap.conf", "/etc/fleetmap/fleetmap.conf"})
+    if (fs::exists(p)) return std::string(p);
+  return std::nullopt;
+}
+
+void apply_config_text(DbSettings& s, Role role, const std::string& text, const std::string& file) {
+  std::istringstream in(text);
+  std::string line, section;
+  size_t no = 0;
+  const std::string mine = section_name(role);
+  while (std::getline(in, line)) {
+    ++no;
+    const std::string where = file + ":" + std::to_string(no);
+    line = trim(line);
+    if (line.empty() || line[0] == '#' || line[0] == ';') continue;
+    if (line.front() == '[') {
+      if (line.back() != ']') throw std::runtime_error(where + ": expected '[section]', got '" + line + "'");
+      section = trim(line.substr(1, line.size() - 2));
+      continue;
+    }
+    const auto eq = line.find('=');
+    if (eq == std::string::npos) throw std::runtime_error(where + ": expected 'key = value', got '" + line + "'");
+    const std::string key = trim(line.substr(0, eq)), value = trim(line.substr(eq + 1));
+    if (section == "database") {
+      if (key == "host") s.host = value;
+      else if (key == "port") s.port = parse_port(value, where);
+      else if (key == "socket") s.socket = value;
+      else if (key == "name") s.database = value;
+      else throw std::runtime_error(where + ": expected host, port, socket or name in [database], got '" + key + "'");
+    } else if (section == mine) {
+      if (key == "user") s.user = value;
+      else if (key == "password") s.password = value;
+      else if (key == "password_file") s.password = trim(read_file(value, "password file"));
+      // other keys of a program's section belong to that program (e.g. server poll settings)
+    }
+  }
+  s.source = file;
+}
+
+void apply_environment(DbSettings& s) {
+  if (const char* v = env("FLEETMAP_HOST")) s.host = v;
+  if (const char* v = env("FLEETMAP_PORT")) s.port = parse_port(v, "FLEETMAP_PORT");
+  if (const char* v = env("FLEETMAP_SOCKET")) s.socket = v;
+  if (const char* v = env("FLEETMAP_DB")) s.database = v;
+  if (const char* v = env("FLEETMAP_USER")) s.user = v;
+  if (const char* v = env("FLEETMAP_PASSWORD")) s.password = v;
+}
+
+DbSettings load_settings(Role role, const std::optional<std::string>& config_path) {
+  DbSettings s;
+  const std::optional<std::string> path = config_path ? config_path : find_config_file();
+  if (path) apply_config_text(s, role, read_file(*path, "config file"), *path);
+  apply_environment(s);
+  return s;
+}
+
+}  // namespace fleetmap

@@ -1,0 +1,43 @@
+#pragma once
+// Where and as whom a program connects (SPEC 4): one config file, overridden by
+// FLEETMAP_* environment variables, overridden by command-line flags.
+//
+//   [database]             [server] / [operator] / [inspector]
+//   host = 127.0.0.1       user = fleetmap_operator
+//   port = 33306           password = ...
+//   socket = /path/sock    (or password_file = /path)
+//   name = fleetmap
+//
+// Environment: FLEETMAP_CONFIG (the file), FLEETMAP_HOST, FLEETMAP_PORT, FLEETMAP_SOCKET,
+// FLEETMAP_DB, FLEETMAP_USER, FLEETMAP_PASSWORD. See etc/fleetmap.conf.sample.
+#include <optional>
+#include <string>
+
+namespace fleetmap {
+
+enum class Role { Server, Operator, Inspector, Robot };
+const char* section_name(Role role);
+
+struct DbSettings {
+  std::string host = "127.0.0.1";
+  unsigned port = 33306;
+  std::string socket;  // preferred over host:port when set
+  std::string database = "fleetmap";
+  std::string user;
+  std::string password;
+  std::string source;  // which config file was read, for messages
+};
+
+// The config file to read: FLEETMAP_CONFIG, else $FLEETMAP_HOME/fleetmap.conf, else
+// ./.fleetmap/fleetmap.conf, else /etc/fleetmap/fleetmap.conf; nullopt when none exists.
+std::optional<std::string> find_config_file();
+
+// Defaults, then the file's [database] and [role] sections (an explicit path must exist),
+// then the environment. Throws std::runtime_error naming the file and line on a bad file.
+DbSettings load_settings(Role role, const std::optional<std::string>& config_path);
+
+// Parses one config text into settings for a role (exposed for tests).
+void apply_config_text(DbSettings& s, Role role, const std::string& text, const std::string& file);
+void apply_environment(DbSettings& s);
+
+}  // namespace fleetmap

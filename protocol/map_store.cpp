@@ -1,0 +1,247 @@
+#include "protocol/map_store.h"
+
+#include <charconv>
+#include <map>
+
+#include "common/map_window.h"
+#include "common/number_format.h"
+#include "protocol/connection.h"
+
+namespace fleetmap {
+namespace {
+
+constexpr size_t kBatchRows = 2000;  // rows per multi-row INSERT
+
+double to_double(const mysqlpp::String& s) {
+  double v = 0;
+  const char* b = s.data();
+  auto [end, ec] = std::from_chars(b, b + s.length(), v);
+  if (ec != std::errc() || end != b + s.length()) throw DbError("unexpected number from the database: '" + std::string(s) + "'");
+  return v;
+}
+
+long long to_int(const mysqlpp::String& s) {
+  long long v = 0;
+  const char* b = s.data();
+  auto [end, ec] = std::from_chars(b, b + s.length(), v);
+  if (ec != std::errc() || end != b + s.length()) throw DbError("unexpected integer from the database: '" + std::string(s) + "'");
+  return v;
+}
+
+std::string n(double v) { return format_number(v); }
+
+std::string polygon_wkt(const Rect& r) {
+  return "POLYGON((" + n(r.xmin) + " " + n(r.ymin) + "," + n(r.xmax) + " " + n(r.ymin) + "," + n(r.xmax) + " " +
+         n(r.ymax) + "," + n(r.xmin) + " " + n(r.ymax) + "," + n(r.xmin) + " " + n(r.ymin) + "))";
+}
+
+MapInfo info_from_row(const mysqlpp::Row& r) {
+  MapInfo i;
+  i.id = static_cast<unsigned>(to_int(r[0]));
+  i.name = std::string(r[1]);
+  i.border = {to_double(r[2]), to_double(r[3]), to_double(r[4]), to_double(r[5])};
+  i.obstacles = static_cast<size_t>(to_int(r[6]));
+  i.segments = static_cast<size_t>(to_int(r[7]));
+  i.source = std::string(r[8]);
+  i.imported_at = std::string(r[9]);
+  return i;
+}
+
+constexpr const char* kInfoColumns = "id, name, mx1, my1, mx4, my4, obstacles, segments, source, imported_at";
+
+// Segment columns in the order read_segment expects, from table alias s.
+constexpr const char* kSegmentColumns = "s.obstacle_ord, s.ax, s.ay, s.bx, s.`by`, s.h, s.in_out, s.semantic, s.note";
+
+Segment read_segment(const mysqlpp::Row& r) {
+  Segment s;
+  s.a = {to_double(r[1]), to_double(r[2])};
+  s.b = {to_double(r[3]), to_double(r[4])};
+  s.h = to_double(r[5]);
+  s.in_out = static_cast<int>(to_int(r[6]));
+  s.semantic = std::string(r[7].data(), r[7].length());
+  s.note = std::string(r[8].data(), r[8].length());
+  return s;
+}
+
+}  // namespace
+
+std::optional<std::string> check_map_name(const std::string& name) {
+  bool ok = !name.empty() && name.size() <= 64;
+  for (char c : name) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.');
+  if (ok) return std::nullopt;
+  return "expected a map name of 1-64 characters from [A-Za-z0-9_.-], got '" + name + "'";
+}
+
+unsigned MapStore::import(const Map& m, const std::string& name, const std::string& source, bool replace,
+                          const ImportProgress& progress) {
+  if (auto e = check_map_name(name)) throw std::invalid_argument(*e);
+  Transaction tx(c_);
+  mysqlpp::Query q = c_.query();
+  q << "SELECT id FROM maps WHERE name = " << mysqlpp::quote << name << " FOR UPDATE";
+  mysqlpp::StoreQueryResult existing = q.store();
+  if (!existing.empty()) {
+    if (!replace) throw MapExists(name);
+    // Segments first: one statement instead of a cascade row by row.
+    const std::string id = std::string(existing[0][0]);
+    execute(c_, "DELETE FROM segments WHERE map_id = " + id);
+    execute(c_, "DELETE FROM obstacles WHERE map_id = " + id);
+    execute(c_, "DELETE FROM maps WHERE id = " + id);
+  }
+
+  const size_t total = m.segment_count();
+  q.reset();
+  q << "INSERT INTO maps (name, mx1, my1, mx4, my4, border, source, obstacles, segments) VALUES ("
+    << mysqlpp::quote << name << ", " << n(m.border.mx1) << ", " << n(m.border.my1) << ", " << n(m.border.mx4)
+    << ", " << n(m.border.my4) << ", ST_GeomFromText('" << polygon_wkt(m.border.rect()) << "'), "
+    << mysqlpp::quote << source.substr(0, 255) << ", " << m.obstacles.size() << ", " << total << ")";
+  const unsigned map_id = static_cast<unsigned>(q.execute().insert_id());
+  const std::string mid = std::to_string(map_id);
+
+  // Obstacles, in batches.
+  for (size_t k = 0; k < m.obstacles.size();) {
+    q.reset();
+    q << "INSERT INTO obstacles (map_id, ord, obstacle_id, st, semantic, cx, cy, r) VALUES ";
+    for (size_t b = 0; b < kBatchRows && k < m.obstacles.size(); ++b, ++k) {
+      const Obstacle& o = m.obstacles[k];
+      if (b) q << ",";
+      q << "(" << mid << "," << k << "," << o.id << "," << static_cast<int>(o.type) << "," << mysqlpp::quote
+        << o.semantic << "," << n(o.bound.c.x) << "," << n(o.bound.c.y) << "," << n(o.bound.r) << ")";
+    }
+    q.execute();
+  }
+
+  // Segments, in batches, with their geometry for the spatial index.
+  size_t done = 0, rows = 0;
+  auto flush = [&] {
+    if (rows == 0) return;
+    q.execute();
+    done += rows;
+    rows = 0;
+    if (progress) progress(done, total);
+  };
+  for (size_t k = 0; k < m.obstacles.size(); ++k) {
+    const Obstacle& o = m.obstacles[k];
+    for (size_t i = 0; i < o.segments.size(); ++i) {
+      const Segment& s = o.segments[i];
+      if (rows == 0) {
+        q.reset();
+        q << "INSERT INTO segments (map_id, obstacle_ord, ord, ax, ay, bx, `by`, h, in_out, semantic, note, geom) "
+             "VALUES ";
+      } else {
+        q << ",";
+      }
+      q << "(" << mid << "," << k << "," << i << "," << n(s.a.x) << "," << n(s.a.y) << "," << n(s.b.x) << ","
+        << n(s.b.y) << "," << n(s.h) << "," << s.in_out << "," << mysqlpp::quote << s.semantic << ","
+        << mysqlpp::quote << s.note << ",LineString(Point(" << n(s.a.x) << "," << n(s.a.y) << "),Point("
+        << n(s.b.x) << "," << n(s.b.y) << ")))";
+      if (++rows == kBatchRows) flush();
+    }
+  }
+  flush();
+  tx.commit();
+  return map_id;
+}
+
+std::vector<MapInfo> MapStore::list() {
+  mysqlpp::Query q = c_.query();
+  q << "SELECT " << kInfoColumns << " FROM maps ORDER BY name";
+  std::vector<MapInfo> out;
+  for (const mysqlpp::Row& r : q.store()) out.push_back(info_from_row(r));
+  return out;
+}
+
+MapInfo MapStore::info(const std::string& name) {
+  mysqlpp::Query q = c_.query();
+  q << "SELECT " << kInfoColumns << " FROM maps WHERE name = " << mysqlpp::quote << name;
+  mysqlpp::StoreQueryResult res = q.store();
+  if (res.empty()) throw MapNotFound(name);
+  return info_from_row(res[0]);
+}
+
+Map MapStore::load(const std::string& name) {
+  const MapInfo info = this->info(name);
+  Map m;
+  m.border = info.border;
+  const std::string mid = std::to_string(info.id);
+  mysqlpp::Query q = c_.query();
+  q << "SELECT obstacle_id, st, semantic FROM obstacles WHERE map_id = " << mid << " ORDER BY ord";
+  for (const mysqlpp::Row& r : q.store()) {
+    Obstacle o;
+    o.id = static_cast<int>(to_int(r[0]));
+    o.type = static_cast<ShapeType>(to_int(r[1]));
+    o.semantic = std::string(r[2].data(), r[2].length());
+    m.obstacles.push_back(std::move(o));
+  }
+  q.reset();
+  q << "SELECT " << kSegmentColumns << " FROM segments s WHERE s.map_id = " << mid << " ORDER BY s.obstacle_ord, s.ord";
+  mysqlpp::UseQueryResult res = q.use();
+  while (mysqlpp::Row r = res.fetch_row()) {
+    const size_t k = static_cast<size_t>(to_int(r[0]));
+    if (k >= m.obstacles.size()) throw DbError("segment of a missing obstacle in map '" + name + "'");
+    m.obstacles[k].segments.push_back(read_segment(r));
+  }
+  m.compute_bounds();
+  return m;
+}
+
+bool MapStore::remove(const std::string& name) {
+  Transaction tx(c_);
+  mysqlpp::Query q = c_.query();
+  q << "SELECT id FROM maps WHERE name = " << mysqlpp::quote << name << " FOR UPDATE";
+  mysqlpp::StoreQueryResult res = q.store();
+  if (res.empty()) return false;
+  const std::string id = std::string(res[0][0]);
+  execute(c_, "DELETE FROM segments WHERE map_id = " + id);
+  execute(c_, "DELETE FROM obstacles WHERE map_id = " + id);
+  execute(c_, "DELETE FROM maps WHERE id = " + id);
+  tx.commit();
+  return true;
+}
+
+std::string MapStore::window_sql(unsigned map_id, const Rect& rect) const {
+  // The spatial index answers MBRIntersects; the cut is exact, in common/.
+  return std::string("SELECT ") + kSegmentColumns + ", o.obstacle_id, o.st, o.semantic" +
+         " FROM segments s FORCE INDEX (sx_segments_geom)"
+         " JOIN obstacles o ON o.map_id = s.map_id AND o.ord = s.obstacle_ord"
+         " WHERE MBRIntersects(s.geom, ST_GeomFromText('" + polygon_wkt(rect) + "'))"
+         " AND s.map_id = " + std::to_string(map_id) + " ORDER BY s.obstacle_ord, s.ord";
+}
+
+Map MapStore::window(const std::string& name, const Rect& rect) {
+  const MapInfo info = this->info(name);
+  Map out;
+  out.border = Border::from_rect(rect);
+  if (rect.empty()) return out;
+  mysqlpp::Query q = c_.query(window_sql(info.id, rect));
+  long long current = -1;
+  Obstacle whole;  // the candidate segments of the current obstacle, uncut
+  auto finish = [&] {
+    if (current < 0) return;
+    if (auto cut = clip_obstacle(whole, rect)) out.obstacles.push_back(std::move(*cut));
+  };
+  for (const mysqlpp::Row& r : q.store()) {
+    const long long ord = to_int(r[0]);
+    if (ord != current) {
+      finish();
+      current = ord;
+      whole = Obstacle{};
+      whole.id = static_cast<int>(to_int(r[9]));
+      whole.type = static_cast<ShapeType>(to_int(r[10]));
+      whole.semantic = std::string(r[11].data(), r[11].length());
+    }
+    whole.segments.push_back(read_segment(r));
+  }
+  finish();
+  return out;
+}
+
+std::string MapStore::window_index(const std::string& name, const Rect& rect) {
+  const MapInfo info = this->info(name);
+  mysqlpp::Query q = c_.query("EXPLAIN " + window_sql(info.id, rect));
+  for (const mysqlpp::Row& r : q.store()) {
+    if (std::string(r["table"]) == "s") return r["key"].is_null() ? "" : std::string(r["key"]);
+  }
+  return "";
+}
+
+}  // namespace fleetmap
