@@ -1,0 +1,76 @@
+#include "tests/integration/test_db.h"
+
+#include <pwd.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "protocol/connection.h"
+
+namespace fleetmap::test {
+
+DbSettings settings(Role role) { return load_settings(role, std::nullopt); }
+
+DbSettings tcp_settings(Role role) {
+  DbSettings s = settings(role);
+  s.socket.clear();
+  s.host = "127.0.0.1";
+  return s;
+}
+
+std::unique_ptr<mysqlpp::Connection> connect_as(Role role) { return connect(settings(role)); }
+
+std::unique_ptr<mysqlpp::Connection> admin() {
+  DbSettings s = settings(Role::Inspector);
+  s.user = getpwuid(geteuid())->pw_name;
+  s.password.clear();
+  return connect(s);
+}
+
+long long scalar(const std::string& sql) {
+  auto c = admin();
+  mysqlpp::Query q = c->query(sql);
+  mysqlpp::StoreQueryResult r = q.store();
+  if (r.empty() || r[0][0].is_null()) throw std::runtime_error("no value from: " + sql);
+  return std::stoll(std::string(r[0][0]));
+}
+
+std::string source_path(const std::string& relative) { return std::string(FLEETMAP_SOURCE_DIR) + "/" + relative; }
+std::string real_map(const std::string& file) { return std::string(FLEETMAP_REAL_MAPS) + "/" + file; }
+
+std::string temp_path(const std::string& name) {
+  const char* home = std::getenv("FLEETMAP_HOME");
+  const std::filesystem::path dir = std::filesystem::path(home ? home : "/tmp") / "scratch";
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
+}
+
+void write_file(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+RunResult run(const std::string& program, const std::string& args) {
+  const std::string out = temp_path("run.out"), err = temp_path("run.err");
+  const std::string cmd = std::string(FLEETMAP_BIN_DIR) + "/" + program + " " + args + " >" + out + " 2>" + err;
+  const int status = std::system(cmd.c_str());
+  RunResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = read_file(out);
+  r.err = read_file(err);
+  return r;
+}
+
+}  // namespace fleetmap::test

@@ -1,0 +1,43 @@
+#pragma once
+// Shared by the integration tests: the private MariaDB started by the CTest fixture
+// (scripts/db.sh start with FLEETMAP_HOME/FLEETMAP_PORT from tests/CMakeLists.txt),
+// its accounts, and running the real programs.
+#include <memory>
+#include <string>
+
+#include <mysql++/mysql++.h>
+
+#include "protocol/db_settings.h"
+
+namespace fleetmap::test {
+
+// Settings of one of the instance's accounts, from its fleetmap.conf.
+DbSettings settings(Role role);
+
+// Over TCP (127.0.0.1), as a robot or GIS tool would connect.
+DbSettings tcp_settings(Role role);
+
+std::unique_ptr<mysqlpp::Connection> connect_as(Role role);
+
+// The instance's administrator: the OS user over the unix socket (scripts/db.sh).
+std::unique_ptr<mysqlpp::Connection> admin();
+
+// One number from a query run as administrator.
+long long scalar(const std::string& sql);
+
+struct RunResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+// Runs build/bin/<program> with args (a shell-quoted string), capturing both streams.
+RunResult run(const std::string& program, const std::string& args);
+
+std::string source_path(const std::string& relative);  // under the checkout
+std::string real_map(const std::string& file);         // maps/amrl/<file>
+std::string temp_path(const std::string& name);        // a scratch file for this test run
+void write_file(const std::string& path, const std::string& text);
+std::string read_file(const std::string& path);
+
+}  // namespace fleetmap::test
