@@ -83,7 +83,11 @@ Map read_amrl(std::string_view text, const AmrlOptions& opt, AmrlReport* report,
   if (rep.segments == 0) throw MapFormatError(file, lineno, "expected at least one segment of non-zero length, got none");
   m.border = {xmin - opt.margin, ymax + opt.margin, xmax + opt.margin, ymin - opt.margin};
   rep.obstacles = m.obstacles.size();
-  validate_map(m);
+  try {
+    validate_map(m);  // options can still be wrong: a negative height, a margin <= 0
+  } catch (const std::invalid_argument& e) {
+    throw MapFormatError(file, 0, e.what());
+  }
   m.compute_bounds();
   if (report) *report = rep;
   return m;

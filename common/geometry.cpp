@@ -23,7 +23,11 @@ std::optional<ClippedSegment> clip_segment(Point a, Point b, const Rect& r) {
     }
   }
   if (!(t0 < t1)) return std::nullopt;
-  ClippedSegment out{t0 == 0 ? a : a + t0 * d, t1 == 1 ? b : a + t1 * d};
+  // a + t*d can land one rounding step outside r; a cut end belongs on r's edge.
+  auto on_rect = [&r](Point p) {
+    return Point{std::fmin(std::fmax(p.x, r.xmin), r.xmax), std::fmin(std::fmax(p.y, r.ymin), r.ymax)};
+  };
+  ClippedSegment out{t0 == 0 ? a : on_rect(a + t0 * d), t1 == 1 ? b : on_rect(a + t1 * d)};
   if (out.a == out.b) return std::nullopt;
   return out;
 }

@@ -13,7 +13,8 @@ using Json = nlohmann::ordered_json;
 
 void check_finite(std::initializer_list<double> values, const std::string& where) {
   for (double v : values)
-    if (!std::isfinite(v)) throw std::invalid_argument("GeoJSON: expected finite numbers in " + where + ", got a NaN or infinity");
+    if (!std::isfinite(v))
+      throw std::invalid_argument("GeoJSON: expected finite numbers in " + where + ", got a NaN or infinity");
 }
 
 // nlohmann's dump rejects invalid UTF-8 with its own type_error; report it in our terms.
@@ -56,7 +57,8 @@ std::string write_geojson(const Map& m, const std::string& name) {
   check_finite({b.mx1, b.my1, b.mx4, b.my4}, "the border");
   const Json header = {{"map", name}, {"frame", "map"}, {"units", "m"}, {"border", {b.mx1, b.my1, b.mx4, b.my4}}};
 
-  std::string out = "{\"type\":\"FeatureCollection\",\"fleetmap\":" + dump(header, "the map name") + ",\"features\":[\n";
+  std::string out = "{\"type\":\"FeatureCollection\",\"fleetmap\":" + dump(header, "the map name");
+  out += ",\"features\":[\n";
   out += dump(border_feature(b), "the border");
   for (const Obstacle& o : m.obstacles) {
     for (size_t i = 0; i < o.segments.size(); ++i) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "common/number_format.h"
 
@@ -33,6 +34,12 @@ double nice_length(double limit) {
   for (double f : {5.0, 2.0, 1.0})
     if (f * p <= limit) return f * p;
   return p;
+}
+
+// Tracks without a colour: a qualitative palette (Tableau 10) by position in the list.
+std::string track_colour(const std::vector<SvgTrack>& tracks, size_t i) {
+  static const char* const palette[] = {"#d62728", "#1f77b4", "#9467bd", "#17becf", "#e377c2", "#bcbd22"};
+  return xml_escape(tracks[i].colour.empty() ? palette[i % std::size(palette)] : tracks[i].colour);
 }
 
 struct Frame {
@@ -98,9 +105,10 @@ std::string write_svg(const Map& m, const SvgOptions& opt) {
     s += "</g>\n";
   }
 
-  for (const SvgTrack& t : opt.tracks) {
+  for (size_t i = 0; i < opt.tracks.size(); ++i) {
+    const SvgTrack& t = opt.tracks[i];
     if (t.points.empty()) continue;
-    const std::string c = xml_escape(t.colour.empty() ? "#d62728" : t.colour);
+    const std::string c = track_colour(opt.tracks, i);
     s += "<g class=\"track\"><title>" + xml_escape(t.label) + "</title>\n<polyline points=\"";
     for (const Point& p : t.points) s += f.xy(p) + " ";
     s.back() = '"';
@@ -112,12 +120,13 @@ std::string write_svg(const Map& m, const SvgOptions& opt) {
   if (!opt.tracks.empty()) {  // legend in the map's upper-right corner, over everything
     const double row = 18, lw = 160, x0 = f.margin + map_w - lw - 8, y0 = f.margin + 8;
     s += "<g class=\"legend\" font-size=\"12\"><rect x=\"" + px(x0) + "\" y=\"" + px(y0) + "\" width=\"" + px(lw) +
-         "\" height=\"" + px(row * opt.tracks.size() + 8) + "\" fill=\"#ffffff\" fill-opacity=\"0.85\" stroke=\"#999999\"/>\n";
+         "\" height=\"" + px(row * opt.tracks.size() + 8) +
+         "\" fill=\"#ffffff\" fill-opacity=\"0.85\" stroke=\"#999999\"/>\n";
     for (size_t i = 0; i < opt.tracks.size(); ++i) {
       const SvgTrack& t = opt.tracks[i];
       const double y = y0 + 4 + row * (i + 0.5);
-      s += "<path d=\"M" + px(x0 + 6) + "," + px(y) + "h20\" stroke=\"" +
-           xml_escape(t.colour.empty() ? "#d62728" : t.colour) + "\" stroke-width=\"3\"/>";
+      s += "<path d=\"M" + px(x0 + 6) + "," + px(y) + "h20\" stroke=\"" + track_colour(opt.tracks, i) +
+           "\" stroke-width=\"3\"/>";
       s += "<text x=\"" + px(x0 + 32) + "\" y=\"" + px(y + 4) + "\">" + xml_escape(t.label) + "</text>\n";
     }
     s += "</g>\n";

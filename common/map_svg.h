@@ -25,7 +25,7 @@ namespace fleetmap {
 // point is marked with a dot (the robot's latest position).
 struct SvgTrack {
   std::string label;   // legend text
-  std::string colour;  // any SVG colour, e.g. "#d62728" or "red"
+  std::string colour;  // any SVG colour, e.g. "#d62728" or "red"; empty: a palette colour
   std::vector<Point> points;
 };
 

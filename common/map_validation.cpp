@@ -55,6 +55,10 @@ std::optional<std::string> check_text(std::string_view text, std::string_view wh
   if (text.size() > kMaxTextBytes)
     return "expected " + std::string(what) + " of at most " + std::to_string(kMaxTextBytes) + " bytes, got " +
            std::to_string(text.size());
+  // The reader trims blanks around fields, so a semantic string with blanks at its ends
+  // would not read back equal.
+  if (!free_form && !text.empty() && (text.front() == ' ' || text.back() == ' ' || text.front() == '\t' || text.back() == '\t'))
+    return "expected " + std::string(what) + " without blanks at its ends, got '" + std::string(text) + "'";
   for (size_t i = 0; i < text.size();) {
     const size_t n = utf8_sequence(text, i);
     if (n == 0) {

@@ -1,6 +1,8 @@
 #include "common/seed_format.h"
 
+#include <algorithm>
 #include <charconv>
+#include <limits>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -63,17 +65,18 @@ class Reader {
     expect_keyword(next(), "#");
 
     const Rect border = m.border.rect();
-    std::map<int, size_t> first_seen;  // obstacle id -> line
     for (;;) {
       Line head = next();
       if (head.eof) break;
-      if (head.content != "obstacle;")
-        fail(head.no, "expected 'obstacle;' or end of file, got " + shown(head.content));
-      Obstacle o = read_obstacle(border);
-      if (auto [it, fresh] = first_seen.emplace(o.id, head.no); !fresh)
-        fail(head.no, "expected a unique obstacle id, got id " + std::to_string(o.id) + " again (first at line " +
-                          std::to_string(it->second) + ")");
-      m.obstacles.push_back(std::move(o));
+      if (head.has_note) no_comment(head);
+      if (head.content != "obstacle;") {
+        std::string hint;
+        if (!m.obstacles.empty() && std::count(head.content.begin(), head.content.end(), ';') == 2)
+          hint = " (a segment line: obstacle " + std::to_string(m.obstacles.back().id) +
+                 " has more segments than its NS = " + std::to_string(m.obstacles.back().segments.size()) + "?)";
+        fail(head.no, "expected 'obstacle;' or end of file, got " + shown(head.content) + hint);
+      }
+      m.obstacles.push_back(read_obstacle(border));
     }
     m.compute_bounds();
     return m;
@@ -84,10 +87,14 @@ class Reader {
     Line h = next();
     auto f = fields(h, 4, "id;ST;NS;semantic;");
     Obstacle o;
-    o.id = static_cast<int>(integer(h, f[0], "obstacle id", -2147483647LL, 2147483647LL));
+    o.id = static_cast<int>(integer(h, f[0], "obstacle id", std::numeric_limits<int>::min(),
+                                    std::numeric_limits<int>::max()));
+    if (auto [it, fresh] = first_seen_.emplace(o.id, h.no); !fresh)
+      fail(h.no, "expected a unique obstacle id, got id " + std::to_string(o.id) + " again (first at line " +
+                     std::to_string(it->second) + ")");
     const long long st = integer(h, f[1], "shape type ST in 1..6", 1, 6);
     o.type = static_cast<ShapeType>(st);
-    const long long ns = integer(h, f[2], "segment count NS >= 1", 1, kMaxSegmentsPerObstacle);
+    const long long ns = integer(h, f[2], "segment count NS in 1..10000000", 1, kMaxSegmentsPerObstacle);
     o.semantic = std::string(f[3]);
     if (auto e = check_text(o.semantic, "obstacle semantic")) fail(h.no, *e);
     expect_keyword(next(), "#");
@@ -105,9 +112,9 @@ class Reader {
       Line lb = next();
       auto fb = fields(lb, 2, "bx;by; of " + which);
       s.b = {number(lb, fb[0], "bx"), number(lb, fb[1], "by")};
+      if (!border.contains(s.a)) fail(la.no, "expected " + which + " to start inside the border, got it outside");
+      if (!border.contains(s.b)) fail(lb.no, "expected " + which + " to end inside the border, got it outside");
       if (s.a == s.b) fail(lb.no, "expected a segment of non-zero length, got b = a");
-      if (!border.contains(s.a) || !border.contains(s.b))
-        fail(la.no, "expected " + which + " inside the border, got it outside");
       Line lh = next();
       auto fh = fields(lh, 3, "h;inOut;semantic; of " + which, true);
       s.h = number(lh, fh[0], "h");
@@ -150,15 +157,16 @@ class Reader {
   }
 
   void expect_keyword(const Line& l, std::string_view kw) {
-    if (l.eof || l.content != kw) fail(l.no, "expected '" + std::string(kw) + "', got " + shown(l.content, l.eof));
     if (l.has_note) no_comment(l);
+    if (l.eof || l.content != kw) fail(l.no, "expected '" + std::string(kw) + "', got " + shown(l.content, l.eof));
   }
 
   // Comments are kept only after a segment's 'h;inOut;semantic;' line (seed 001 Fig. 2);
   // anywhere else they would be lost on export, so they are refused.
   [[noreturn]] void no_comment(const Line& l) {
-    fail(l.no, "expected no '%' comment on this line (only after 'h;inOut;semantic;'), got '%" +
-                   std::string(l.note.substr(0, 40)) + "'");
+    fail(l.no, std::string("expected no '%' comment ") +
+                   (l.content.empty() ? "on a line of its own" : "on this line") +
+                   " (only after 'h;inOut;semantic;'), got '%" + std::string(l.note.substr(0, 40)) + "'");
   }
 
   std::vector<std::string_view> fields(const Line& l, size_t n, const std::string& layout,
@@ -188,8 +196,9 @@ class Reader {
     auto [end, ec] = std::from_chars(f.data(), f.data() + f.size(), v);
     if (f.empty() || end != f.data() + f.size() || ec == std::errc::invalid_argument)
       fail(l.no, "expected a number for " + std::string(what) + ", got " + shown(f));
-    if (ec == std::errc::result_out_of_range || !std::isfinite(v))
-      fail(l.no, "expected a finite number for " + std::string(what) + ", got " + shown(f));
+    if (ec == std::errc::result_out_of_range)
+      fail(l.no, "expected a number within double range for " + std::string(what) + ", got " + shown(f));
+    if (!std::isfinite(v)) fail(l.no, "expected a finite number for " + std::string(what) + ", got " + shown(f));
     if (std::abs(v) > kMaxCoordinate)
       fail(l.no, "expected |" + std::string(what) + "| <= " + format_number(kMaxCoordinate) + ", got " + shown(f));
     return v;
@@ -210,11 +219,14 @@ class Reader {
   size_t pos_ = 0;
   size_t lineno_ = 0;
   MapKind kind_;
+  std::map<int, size_t> first_seen_;  // obstacle id -> line of its header fields
 };
 
 }  // namespace
 
 Map read_seed(std::string_view text, const std::string& file, MapKind kind) {
+  // A UTF-8 byte-order mark, as some editors write, is not part of the map.
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
   return Reader(text, file, kind).read();
 }
 

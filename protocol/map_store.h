@@ -39,6 +39,10 @@ std::optional<std::string> check_map_name(const std::string& name);
 
 using ImportProgress = std::function<void(size_t segments_done, size_t segments_total)>;
 
+// How the window query finds its rows: the spatial index (the product), or a full scan
+// of the map's segments (the baseline the benchmark compares it with).
+enum class WindowAccess { SpatialIndex, FullScan };
+
 class MapStore {
  public:
   explicit MapStore(mysqlpp::Connection& c) : c_(c) {}
@@ -55,13 +59,13 @@ class MapStore {
 
   // The partial map of rect (already intersected with the border by the caller): the
   // segments whose bounding box meets rect, found with the spatial index, cut at its edge.
-  Map window(const std::string& name, const Rect& rect);
+  Map window(const std::string& name, const Rect& rect, WindowAccess access = WindowAccess::SpatialIndex);
 
   // The index the window query uses according to EXPLAIN ("sx_segments_geom" expected).
   std::string window_index(const std::string& name, const Rect& rect);
 
  private:
-  std::string window_sql(unsigned map_id, const Rect& rect) const;
+  std::string window_sql(unsigned map_id, const Rect& rect, WindowAccess access) const;
   mysqlpp::Connection& c_;
 };
 

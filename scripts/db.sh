@@ -106,12 +106,16 @@ start() {
     --character-set-server=utf8mb4 --collation-server=utf8mb4_unicode_ci \
     --max-allowed-packet=64M --innodb-buffer-pool-size=512M --innodb-log-file-size=256M \
     --transaction-isolation=READ-COMMITTED >/dev/null 2>&1 &
-  local i
-  for i in $(seq 1 120); do
+  local pid=$! i
+  for i in $(seq 1 240); do
     running && break
+    if ! kill -0 "$pid" 2>/dev/null; then
+      grep -E '\[ERROR\]' "$LOG" | tail -n 3 >&2 || true
+      die "server exited at start (port $PORT taken? set FLEETMAP_PORT), see $LOG"
+    fi
     sleep 0.25
   done
-  running || die "server did not answer within 30 s, see $LOG"
+  running || die "server did not answer within 60 s, see $LOG"
   load_sql
   echo "db.sh: running (socket $SOCK, port $PORT, database $DB, config $CONF)"
 }

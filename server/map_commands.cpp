@@ -211,7 +211,9 @@ void add_map_commands(CLI::App& app, CliContext& ctx, int* exit_code) {
       if (!(w > 0 && h > 0)) throw std::invalid_argument("expected W > 0 and H > 0");
       MapStore store(ctx.connection());
       const MapInfo info = store.info(*name);
-      const Map part = store.window(*name, window_rect(info.border, {x, y}, w, h));
+      const Rect r = window_rect(info.border, {x, y}, w, h);
+      if (r.empty()) throw std::invalid_argument("expected a window that overlaps the map's border, got one outside it");
+      const Map part = store.window(*name, r);
       write_output(write_seed(part), *out);
       *exit_code = exit_code::kOk;
     });

@@ -63,10 +63,17 @@ TEST(BoundingCircle, SquareAndInteriorPoints) {
 
 // ---- brute force ------------------------------------------------------------------
 
-bool covers(Point c, double r, const std::vector<Point>& pts) {
+// slack: absolute rounding allowance, a few ulps of the largest coordinate.
+bool covers(Point c, double r, const std::vector<Point>& pts, double slack) {
   for (Point p : pts)
-    if (distance(c, p) > r * (1 + 1e-12) + 1e-12) return false;
+    if (distance(c, p) > r * (1 + 1e-12) + slack) return false;
   return true;
+}
+
+double max_abs(const std::vector<Point>& pts) {
+  double m = 0;
+  for (Point p : pts) m = std::max({m, std::abs(p.x), std::abs(p.y)});
+  return m;
 }
 
 // Smallest circle among those on the diameter of two points or through three points
@@ -75,21 +82,24 @@ double brute_force_radius(const std::vector<Point>& pts) {
   if (pts.size() == 1) return 0;
   double best = std::numeric_limits<double>::infinity();
   const size_t n = pts.size();
+  const double slack = 1e-12 + 8 * std::numeric_limits<double>::epsilon() * max_abs(pts);
   for (size_t i = 0; i < n; ++i)
     for (size_t j = i + 1; j < n; ++j) {
       const Point c = 0.5 * (pts[i] + pts[j]);
       const double r = distance(pts[i], pts[j]) / 2;
-      if (r < best && covers(c, r, pts)) best = r;
+      if (r < best && covers(c, r, pts, slack)) best = r;
       for (size_t k = j + 1; k < n; ++k) {
-        // Circumcentre from the perpendicular bisectors, solved by Cramer's rule.
+        // Circumcentre from the perpendicular bisectors (in coordinates relative to the
+        // first point, so that a far offset costs no precision), solved by Cramer's rule.
         const Point a = pts[i], b = pts[j], q = pts[k];
-        const double a1 = 2 * (b.x - a.x), b1 = 2 * (b.y - a.y), c1 = dot(b, b) - dot(a, a);
-        const double a2 = 2 * (q.x - a.x), b2 = 2 * (q.y - a.y), c2 = dot(q, q) - dot(a, a);
+        const Point u = b - a, v = q - a;
+        const double a1 = 2 * u.x, b1 = 2 * u.y, c1 = dot(u, u);
+        const double a2 = 2 * v.x, b2 = 2 * v.y, c2 = dot(v, v);
         const double det = a1 * b2 - a2 * b1;
-        if (std::abs(det) < 1e-12) continue;
-        const Point cc{(c1 * b2 - c2 * b1) / det, (a1 * c2 - a2 * c1) / det};
+        if (std::abs(det) <= 1e-12 * (dot(u, u) + dot(v, v))) continue;  // collinear
+        const Point cc = a + Point{(c1 * b2 - c2 * b1) / det, (a1 * c2 - a2 * c1) / det};
         const double rr = std::max({distance(cc, a), distance(cc, b), distance(cc, q)});
-        if (rr < best && covers(cc, rr, pts)) best = rr;
+        if (rr < best && covers(cc, rr, pts, slack)) best = rr;
       }
     }
   return best;
@@ -111,6 +121,25 @@ TEST(BoundingCircle, RandomSetsAgainstBruteForce) {
     const double want = brute_force_radius(pts);
     EXPECT_NEAR(c.r, want, 1e-9 * std::max(want, 1e-300)) << "set " << set << " of " << pts.size() << " points";
     for (Point p : pts) EXPECT_LE(distance(c.c, p), c.r * (1 + 1e-9)) << "set " << set;
+  }
+}
+
+// Coordinates far from the origin (up to 5e6 m, within kMaxCoordinate): rounding of
+// the coordinates themselves (~1e-9 m) is all the error allowed.
+TEST(BoundingCircle, RandomSetsFarFromOrigin) {
+  std::mt19937_64 rng(1717);
+  std::uniform_int_distribution<int> count(1, 10);
+  std::uniform_real_distribution<double> u(-50, 50);
+  for (int set = 0; set < 200; ++set) {
+    const int n = count(rng);
+    const Point offset{u(rng) * 1e5, u(rng) * 1e5};
+    std::vector<Point> pts;
+    for (int i = 0; i < n; ++i) pts.push_back(offset + Point{u(rng), u(rng)});
+    const double slack = 16 * std::numeric_limits<double>::epsilon() * max_abs(pts);
+    const Circle c = minimum_bounding_circle(pts);
+    const double want = brute_force_radius(pts);
+    EXPECT_NEAR(c.r, want, 1e-9 * want + slack) << "set " << set << " of " << pts.size() << " points";
+    for (Point p : pts) EXPECT_LE(distance(c.c, p), c.r + slack) << "set " << set;
   }
 }
 

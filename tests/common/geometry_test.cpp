@@ -133,6 +133,42 @@ TEST(ClipSegment, Degenerate) {
   EXPECT_FALSE(clip_segment({-1, -1}, {1, 1}, Rect{0, 0, 0, 0}));
 }
 
+// A cut end lies on the rectangle's edge exactly, never one rounding step outside:
+// windows are sent as seed text and their reader checks every end against the border
+// (Rect::contains, exact).
+TEST(ClipSegment, CutEndsAreInsideExactly) {
+  // t1 = 7.9 / 8.9 from y = 10; a.y + t1 * d.y rounds to 10.000000000000002.
+  auto c = clip_segment({-2.7, 2.1}, {10.8, 11.0}, kBox);
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->a.x, 0);
+  EXPECT_EQ(c->b.y, 10);
+  EXPECT_TRUE(kBox.contains(c->a) && kBox.contains(c->b))
+      << "(" << c->a.x << "," << c->a.y << ")-(" << c->b.x << "," << c->b.y << ")";
+  // t0 = 0.6 / 0.7 from x = 0.1; a.x + t0 * d.x rounds to 0.09999999999999998.
+  const Rect r{0.1, 0.1, 0.7, 0.3};
+  auto d = clip_segment({-0.5, -0.5}, {0.2, 0.2}, r);
+  ASSERT_TRUE(d);
+  EXPECT_EQ(d->a.x, 0.1);
+  EXPECT_EQ(d->a.y, 0.1);
+  EXPECT_TRUE(r.contains(d->a) && r.contains(d->b)) << "(" << d->a.x << "," << d->a.y << ")";
+}
+
+TEST(ClipSegment, RandomCutEndsAreInsideExactly) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-30, 30);
+  int outside = 0, clipped = 0;
+  for (int iter = 0; iter < 100000; ++iter) {
+    double x0 = u(rng), x1 = u(rng), y0 = u(rng), y1 = u(rng);
+    const Rect r{std::min(x0, x1), std::min(y0, y1), std::max(x0, x1), std::max(y0, y1)};
+    if (auto c = clip_segment({u(rng), u(rng)}, {u(rng), u(rng)}, r)) {
+      ++clipped;
+      if (!r.contains(c->a) || !r.contains(c->b)) ++outside;
+    }
+  }
+  EXPECT_GT(clipped, 10000);
+  EXPECT_EQ(outside, 0) << "of " << clipped << " clipped segments";
+}
+
 // ---- randomized: exact rational clipping ------------------------------------------
 
 struct Frac {  // n / d with d > 0
@@ -185,8 +221,8 @@ TEST(ClipSegment, RandomAgainstExactRationalClip) {
     const auto [t0, t1] = *want;
     const Point d = pb - pa;
     auto at = [&](Frac t) { return Point{pa.x + double(t.n) / double(t.d) * d.x, pa.y + double(t.n) / double(t.d) * d.y}; };
-    if (t0.n == 0) EXPECT_TRUE(same_bits(got->a, pa));
-    if (t1.n == t1.d) EXPECT_TRUE(same_bits(got->b, pb));
+    if (t0.n == 0) { EXPECT_TRUE(same_bits(got->a, pa)); }
+    if (t1.n == t1.d) { EXPECT_TRUE(same_bits(got->b, pb)); }
     if (t0.n == 0 && t1.n == t1.d) ++unclipped;
     const Point ea = at(t0), eb = at(t1);
     EXPECT_NEAR(got->a.x, ea.x, 1e-12);

@@ -127,7 +127,9 @@ TEST(MapGeojson, SegmentFeaturesMatchTheModelExactly) {
       EXPECT_EQ(p.at("in_out").get<int>(), s.in_out);
       EXPECT_EQ(p.at("semantic").get<std::string>(), s.semantic);
       EXPECT_EQ(p.contains("note"), !s.note.empty());
-      if (!s.note.empty()) EXPECT_EQ(p.at("note").get<std::string>(), s.note);
+      if (!s.note.empty()) {
+        EXPECT_EQ(p.at("note").get<std::string>(), s.note);
+      }
     }
   }
   EXPECT_EQ(k, features.size());

@@ -40,6 +40,14 @@ Map sample_map() {
   return m;
 }
 
+SvgOptions options(double width_px, double margin_px = 40, double scale_bar_m = 0) {
+  SvgOptions opt;
+  opt.width_px = width_px;
+  opt.margin_px = margin_px;
+  opt.scale_bar_m = scale_bar_m;
+  return opt;
+}
+
 // Border (0,10)-(10,0), one segment from the upper-right corner to the origin.
 Map square_map() {
   Map m;
@@ -49,7 +57,9 @@ Map square_map() {
 }
 
 TEST(MapSvg, IsABalancedStandaloneDocument) {
-  const std::string svg = write_svg(sample_map(), {.title = "floor 1"});
+  SvgOptions opt;
+  opt.title = "floor 1";
+  const std::string svg = write_svg(sample_map(), opt);
   EXPECT_EQ(svg.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg ", 0), 0u);
   EXPECT_EQ(count(svg, "<svg "), 1u);
   EXPECT_EQ(count(svg, "</svg>"), 1u);
@@ -75,7 +85,7 @@ TEST(MapSvg, OneLinePerSegment) {
 
 TEST(MapSvg, FlipsYAndScalesTheLargerSideToWidth) {
   // k = 100 px / 10 m; margin 40: map (10,10) -> (140,40), map (0,0) -> (40,140).
-  const std::string svg = write_svg(square_map(), {.width_px = 100});
+  const std::string svg = write_svg(square_map(), options(100));
   EXPECT_NE(svg.find("x1=\"140\" y1=\"40\" x2=\"40\" y2=\"140\""), std::string::npos) << svg;
   EXPECT_NE(svg.find("width=\"180\" height=\"180\""), std::string::npos);
   EXPECT_NE(svg.find("<rect class=\"border\" x=\"40\" y=\"40\" width=\"100\" height=\"100\""), std::string::npos);
@@ -84,7 +94,7 @@ TEST(MapSvg, FlipsYAndScalesTheLargerSideToWidth) {
   Map wide = square_map();
   wide.border = {0, 10, 20, 0};
   wide.obstacles[0].segments[0] = {{20, 0}, {0, 10}, 0, 0, "", ""};
-  const std::string svg2 = write_svg(wide, {.width_px = 100, .margin_px = 10});
+  const std::string svg2 = write_svg(wide, options(100, 10));
   EXPECT_NE(svg2.find("x1=\"110\" y1=\"60\" x2=\"10\" y2=\"10\""), std::string::npos) << svg2;
   EXPECT_NE(svg2.find("width=\"120\" height=\"70\""), std::string::npos);
 }
@@ -129,12 +139,17 @@ TEST(MapSvg, DrawsTracksOnTopWithALegend) {
   EXPECT_NE(svg.find("class=\"legend\""), std::string::npos);
   EXPECT_NE(svg.find(">robot 1</text>"), std::string::npos);
   EXPECT_NE(svg.find(">robot 2</text>"), std::string::npos);
+  SvgOptions uncoloured = opt;
+  uncoloured.tracks[0].colour = uncoloured.tracks[1].colour = "";
+  const std::string svg2 = write_svg(square_map(), uncoloured);
+  EXPECT_NE(svg2.find("<circle cx=\"140\" cy=\"40\" r=\"4\" fill=\"#d62728\""), std::string::npos);
+  EXPECT_NE(svg2.find("<circle cx=\"90\" cy=\"140\" r=\"4\" fill=\"#1f77b4\""), std::string::npos);
 }
 
 TEST(MapSvg, ScaleBar) {
   EXPECT_NE(write_svg(square_map()).find(">2 m</text>"), std::string::npos);  // 1-2-5 up to 10 m / 4
   EXPECT_NE(write_svg(sample_map()).find(">5 m</text>"), std::string::npos);  // up to 30 m / 4
-  const std::string svg = write_svg(square_map(), {.width_px = 100, .scale_bar_m = 10});
+  const std::string svg = write_svg(square_map(), options(100, 40, 10));
   EXPECT_NE(svg.find("h100v-4"), std::string::npos);  // 10 m = 100 px
   EXPECT_NE(svg.find(">10 m</text>"), std::string::npos);
 }

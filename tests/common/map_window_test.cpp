@@ -21,7 +21,8 @@ Obstacle square(int id, double x0, double y0, double x1, double y1, double h = 3
   Obstacle o;
   o.id = id;
   o.type = ShapeType::ClosedPolygon;
-  o.semantic = "building,b" + std::to_string(id);
+  o.semantic = "building,b";
+  o.semantic += std::to_string(id);
   o.segments = {seg({x0, y0}, {x1, y0}, h), seg({x1, y0}, {x1, y1}, h, "wall,glass", "east face"),
                 seg({x1, y1}, {x0, y1}, h), seg({x0, y1}, {x0, y0}, h)};
   return o;
@@ -81,10 +82,14 @@ TEST(MapWindow, ObstacleOrderAndIdsKept) {
   EXPECT_EQ(v.obstacles[2].id, 3);
   // Obstacle 2's square (15..18) keeps its two sides that enter [5,17]^2, cut at 17.
   ASSERT_EQ(v.obstacles[1].segments.size(), 2u);
-  EXPECT_EQ(v.obstacles[1].segments[0].a, (Point{17, 15}));
-  EXPECT_EQ(v.obstacles[1].segments[0].b, (Point{15, 15}));
-  EXPECT_EQ(v.obstacles[1].segments[1].a, (Point{15, 15}));
-  EXPECT_EQ(v.obstacles[1].segments[1].b, (Point{15, 17}));
+  // (15,15)-(18,15) -> (15,15)-(17,15); (15,18)-(15,15) -> (15,17)-(15,15).
+  const auto& s2 = v.obstacles[1].segments;
+  EXPECT_EQ(s2[0].a, (Point{15, 15}));
+  EXPECT_DOUBLE_EQ(s2[0].b.x, 17);
+  EXPECT_DOUBLE_EQ(s2[0].b.y, 15);
+  EXPECT_DOUBLE_EQ(s2[1].a.x, 15);
+  EXPECT_DOUBLE_EQ(s2[1].a.y, 17);
+  EXPECT_EQ(s2[1].b, (Point{15, 15}));
 }
 
 TEST(MapWindow, ObstaclesOutsideDropped) {
@@ -132,13 +137,14 @@ Map random_map(std::mt19937_64& rng, int obstacles) {
     Obstacle o;
     o.id = 10 * k + 1;
     o.type = ShapeType::OpenPolygon;
-    o.semantic = "thing," + std::to_string(k);
+    o.semantic = "thing,";
+    o.semantic += std::to_string(k);
     Point p{u(rng), u(rng)};
     const int n = nseg(rng);
     for (int i = 0; i < n; ++i) {
       Point q{std::clamp(p.x + step(rng), 0.0, 100.0), std::clamp(p.y + step(rng), 0.0, 100.0)};
       if (q == p) q.x = p.x < 50 ? p.x + 1 : p.x - 1;
-      o.segments.push_back(Segment{p, q, 0.1 * i, i % 2, "s" + std::to_string(i), i == 2 ? "n" : ""});
+      o.segments.push_back(Segment{p, q, 0.1 * i, i % 2, std::to_string(i) + "s", i == 2 ? "n" : ""});
       p = q;
     }
     m.obstacles.push_back(std::move(o));
