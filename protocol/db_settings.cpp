@@ -88,7 +88,7 @@ void apply_config_text(DbSettings& s, Role role, const std::string& text, const 
       if (key == "user") s.user = value;
       else if (key == "password") s.password = value;
       else if (key == "password_file") s.password = trim(read_file(value, "password file"));
-      // other keys of a program's section belong to that program (e.g. server poll settings)
+      else s.program[key] = value;  // the program's own settings
     }
   }
   s.source = file;

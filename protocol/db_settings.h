@@ -10,6 +10,7 @@
 //
 // Environment: FLEETMAP_CONFIG (the file), FLEETMAP_HOST, FLEETMAP_PORT, FLEETMAP_SOCKET,
 // FLEETMAP_DB, FLEETMAP_USER, FLEETMAP_PASSWORD. See etc/fleetmap.conf.sample.
+#include <map>
 #include <optional>
 #include <string>
 
@@ -26,6 +27,9 @@ struct DbSettings {
   std::string user;
   std::string password;
   std::string source;  // which config file was read, for messages
+  // Other keys of the role's section: settings of the program itself (e.g. the server's
+  // alive_period_s), read by that program.
+  std::map<std::string, std::string> program;
 };
 
 // The config file to read: FLEETMAP_CONFIG, else $FLEETMAP_HOME/fleetmap.conf, else

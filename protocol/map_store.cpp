@@ -44,10 +44,14 @@ MapInfo info_from_row(const mysqlpp::Row& r) {
   i.segments = static_cast<size_t>(to_int(r[7]));
   i.source = std::string(r[8]);
   i.imported_at = std::string(r[9]);
+  if (!r[10].is_null()) i.geo_lat = to_double(r[10]);
+  if (!r[11].is_null()) i.geo_lon = to_double(r[11]);
+  if (!r[12].is_null()) i.geo_heading = to_double(r[12]);
   return i;
 }
 
-constexpr const char* kInfoColumns = "id, name, mx1, my1, mx4, my4, obstacles, segments, source, imported_at";
+constexpr const char* kInfoColumns =
+    "id, name, mx1, my1, mx4, my4, obstacles, segments, source, imported_at, geo_lat, geo_lon, geo_heading";
 
 // Segment columns in the order read_segment expects, from table alias s.
 constexpr const char* kSegmentColumns = "s.obstacle_ord, s.ax, s.ay, s.bx, s.`by`, s.h, s.in_out, s.semantic, s.note";
@@ -182,6 +186,22 @@ MapInfo MapStore::info(const std::string& name) {
   return info_from_row(res[0]);
 }
 
+std::optional<MapInfo> MapStore::info(unsigned id) {
+  mysqlpp::Query q = c_.query();
+  q << "SELECT " << kInfoColumns << " FROM maps WHERE id = " << id;
+  mysqlpp::StoreQueryResult res = q.store();
+  if (res.empty()) return std::nullopt;
+  return info_from_row(res[0]);
+}
+
+void MapStore::set_georef(const std::string& name, std::optional<double> lat, std::optional<double> lon,
+                          double heading) {
+  mysqlpp::Query q = c_.query();
+  q << "UPDATE maps SET geo_lat = " << (lat ? n(*lat) : "NULL") << ", geo_lon = " << (lon ? n(*lon) : "NULL")
+    << ", geo_heading = " << (lat ? n(heading) : "NULL") << " WHERE name = " << mysqlpp::quote << name;
+  if (q.execute().rows() == 0) info(name);  // throws MapNotFound when there is no such map
+}
+
 Map MapStore::load(const std::string& name) {
   const MapInfo info = this->info(name);
   Map m;
@@ -234,11 +254,14 @@ std::string MapStore::window_sql(unsigned map_id, const Rect& rect, WindowAccess
 }
 
 Map MapStore::window(const std::string& name, const Rect& rect, WindowAccess access) {
-  const MapInfo info = this->info(name);
+  return window(this->info(name).id, rect, access);
+}
+
+Map MapStore::window(unsigned map_id, const Rect& rect, WindowAccess access) {
   Map out;
   out.border = Border::from_rect(rect);
   if (rect.empty()) return out;
-  mysqlpp::Query q = c_.query(window_sql(info.id, rect, access));
+  mysqlpp::Query q = c_.query(window_sql(map_id, rect, access));
   long long current = -1;
   Obstacle whole;  // the candidate segments of the current obstacle, uncut
   auto finish = [&] {

@@ -21,6 +21,8 @@ struct MapInfo {
   size_t segments = 0;
   std::string source;
   std::string imported_at;
+  // Georeference (maps.geo_*): the map origin's WGS84 position, the x axis heading.
+  std::optional<double> geo_lat, geo_lon, geo_heading;
 };
 
 class MapNotFound : public std::runtime_error {
@@ -54,12 +56,16 @@ class MapStore {
 
   std::vector<MapInfo> list();
   MapInfo info(const std::string& name);  // throws MapNotFound
+  std::optional<MapInfo> info(unsigned id);
+  // Sets or clears (nullopt) a map's georeference; throws MapNotFound.
+  void set_georef(const std::string& name, std::optional<double> lat, std::optional<double> lon, double heading);
   Map load(const std::string& name);
   bool remove(const std::string& name);
 
   // The partial map of rect (already intersected with the border by the caller): the
   // segments whose bounding box meets rect, found with the spatial index, cut at its edge.
   Map window(const std::string& name, const Rect& rect, WindowAccess access = WindowAccess::SpatialIndex);
+  Map window(unsigned map_id, const Rect& rect, WindowAccess access = WindowAccess::SpatialIndex);
 
   // The index the window query uses according to EXPLAIN ("sx_segments_geom" expected).
   std::string window_index(const std::string& name, const Rect& rect);

@@ -10,16 +10,19 @@
 #include "server/cli_context.h"
 #include "server/exit_codes.h"
 #include "server/map_commands.h"
+#include "server/robot_commands.h"
+#include "protocol/fleet_store.h"
 
 int main(int argc, char** argv) {
   using namespace fleetmap;
-  CLI::App app{"fleetmap: operator command line of the fleetmap map service"};
+  CLI::App app{"fleetmap: operator command line of the fleetmap map service (maps, robots, goals, tasks)"};
   app.require_subcommand(1);
   app.footer("Exit codes: 0 ok, 1 failure (database, I/O), 2 malformed input, 4 not found or exists, 64 usage.");
   CliContext ctx(Role::Operator);
   ctx.add_connection_options(app);
   int code = exit_code::kOk;
   add_map_commands(app, ctx, &code);
+  add_robot_commands(app, ctx, &code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -35,6 +38,9 @@ int main(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {
     std::cerr << "fleetmap: " << e.what() << "\n";
     return exit_code::kBadInput;
+  } catch (const RobotNotFound& e) {
+    std::cerr << "fleetmap: " << e.what() << "\n";
+    return exit_code::kNotFound;
   } catch (const MapNotFound& e) {
     std::cerr << "fleetmap: " << e.what() << "\n";
     return exit_code::kNotFound;

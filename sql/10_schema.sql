@@ -17,6 +17,11 @@ CREATE TABLE IF NOT EXISTS maps (
   obstacles   INT UNSIGNED NOT NULL DEFAULT 0,
   segments    INT UNSIGNED NOT NULL DEFAULT 0,
   imported_at TIMESTAMP(6) NOT NULL DEFAULT CURRENT_TIMESTAMP(6),
+  -- georeference (optional): the map origin's WGS84 position and the map x axis heading
+  -- (radians, counter-clockwise from east); SendGPS fixes get map coordinates from it
+  geo_lat     DOUBLE NULL,
+  geo_lon     DOUBLE NULL,
+  geo_heading DOUBLE NULL,
   UNIQUE KEY uq_maps_name (name)
 ) ENGINE=InnoDB;
 
@@ -62,7 +67,8 @@ CREATE TABLE IF NOT EXISTS robots (
   db_user     VARCHAR(80) CHARACTER SET utf8mb4 COLLATE utf8mb4_nopad_bin NOT NULL,
   map_id      INT UNSIGNED NULL,
   state       ENUM('offline','ready','moving','stopped','lost') NOT NULL DEFAULT 'offline',
-  magic       BIGINT NULL,
+  magic       BIGINT NULL,                    -- of the current session (last Ready); NULL: never registered
+  session_at  TIMESTAMP(6) NULL,
   x           DOUBLE NULL,
   y           DOUBLE NULL,
   theta       DOUBLE NULL,
@@ -84,7 +90,9 @@ CREATE TABLE IF NOT EXISTS tasks (
   goal_x      DOUBLE NOT NULL,
   goal_y      DOUBLE NOT NULL,
   state       ENUM('assigned','acknowledged','active','done','aborted','failed') NOT NULL DEFAULT 'assigned',
-  answer_id   BIGINT UNSIGNED NULL,           -- the sa row that pushed SetPosEnd / Abort
+  answer_id   BIGINT UNSIGNED NULL,           -- the sa row that pushed SetPosEnd (NULL: not pushed yet)
+  abort_requested_at TIMESTAMP(6) NULL,       -- an operator asked to abort
+  abort_answer_id BIGINT UNSIGNED NULL,       -- the sa row that pushed Abort
   reason      VARCHAR(255) NOT NULL DEFAULT '',
   created_at  TIMESTAMP(6) NOT NULL DEFAULT CURRENT_TIMESTAMP(6),
   updated_at  TIMESTAMP(6) NOT NULL DEFAULT CURRENT_TIMESTAMP(6) ON UPDATE CURRENT_TIMESTAMP(6),
@@ -105,6 +113,46 @@ CREATE TABLE IF NOT EXISTS trajectories (
   KEY ix_trajectories_robot_t (robot_id, t),
   SPATIAL INDEX sx_trajectories_pos (pos),
   CONSTRAINT fk_trajectories_robot FOREIGN KEY (robot_id) REFERENCES robots (id)
+) ENGINE=InnoDB;
+
+CREATE TABLE IF NOT EXISTS gps_fixes (
+  id          BIGINT UNSIGNED NOT NULL AUTO_INCREMENT PRIMARY KEY,
+  robot_id    INT UNSIGNED NOT NULL,
+  t           TIMESTAMP(6) NOT NULL,
+  lat         DOUBLE NOT NULL,
+  lon         DOUBLE NOT NULL,
+  x           DOUBLE NULL,                    -- map coordinates when the map is georeferenced
+  y           DOUBLE NULL,
+  KEY ix_gps_robot_t (robot_id, t),
+  CONSTRAINT fk_gps_robot FOREIGN KEY (robot_id) REFERENCES robots (id)
+) ENGINE=InnoDB;
+
+CREATE TABLE IF NOT EXISTS images (
+  id          BIGINT UNSIGNED NOT NULL AUTO_INCREMENT PRIMARY KEY,
+  robot_id    INT UNSIGNED NOT NULL,
+  t           TIMESTAMP(6) NOT NULL,
+  x           DOUBLE NOT NULL,
+  y           DOUBLE NOT NULL,
+  object_id   BIGINT NULL,
+  format      VARCHAR(32) NOT NULL,
+  data        LONGBLOB NOT NULL,
+  KEY ix_images_robot_t (robot_id, t),
+  CONSTRAINT fk_images_robot FOREIGN KEY (robot_id) REFERENCES robots (id)
+) ENGINE=InnoDB;
+
+-- Objects robots observed (SetObject); the semantic layer builds on this.
+CREATE TABLE IF NOT EXISTS observed_objects (
+  id          BIGINT UNSIGNED NOT NULL AUTO_INCREMENT PRIMARY KEY,
+  robot_id    INT UNSIGNED NOT NULL,
+  map_id      INT UNSIGNED NULL,
+  t           TIMESTAMP(6) NOT NULL,
+  x           DOUBLE NOT NULL,
+  y           DOUBLE NOT NULL,
+  object      VARCHAR(255) NOT NULL,
+  pos         POINT REF_SYSTEM_ID=0 NOT NULL,
+  SPATIAL INDEX sx_observed_pos (pos),
+  KEY ix_observed_robot_t (robot_id, t),
+  CONSTRAINT fk_observed_robot FOREIGN KEY (robot_id) REFERENCES robots (id)
 ) ENGINE=InnoDB;
 
 -- RR/SA protocol (SPEC 5.1). Column names and types are the protocol: do not rename.

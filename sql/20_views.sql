@@ -42,6 +42,15 @@ CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_requests AS
 CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_answers AS
   SELECT id, robot_id, db_user, request_id, op, params, OCTET_LENGTH(payload) AS payload_bytes, created_at FROM sa;
 
+-- Objects robots reported with SetObject, with who saw them and when.
+CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_observed_objects AS
+  SELECT o.id, r.db_user AS robot, m.name AS map, o.t, o.x, o.y, o.object, o.pos
+  FROM observed_objects o JOIN robots r ON r.id = o.robot_id LEFT JOIN maps m ON m.id = o.map_id;
+
+CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_gps_fixes AS
+  SELECT g.id, r.db_user AS robot, g.t, g.lat, g.lon, g.x, g.y
+  FROM gps_fixes g JOIN robots r ON r.id = g.robot_id;
+
 -- Each robot sees and deletes only its own answers (SPEC 5.1, 9). Safe only with the
 -- account-name rule and the binary no-pad collation of sa.db_user.
 CREATE OR REPLACE SQL SECURITY DEFINER VIEW sa_mine AS

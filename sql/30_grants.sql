@@ -18,6 +18,9 @@ GRANT SELECT, INSERT, UPDATE, DELETE ON tasks TO fleetmap_server_role;
 GRANT SELECT, INSERT, UPDATE, DELETE ON trajectories TO fleetmap_server_role;
 GRANT SELECT, INSERT, UPDATE, DELETE ON rr TO fleetmap_server_role;
 GRANT SELECT, INSERT, UPDATE, DELETE ON sa TO fleetmap_server_role;
+GRANT SELECT, INSERT, UPDATE, DELETE ON gps_fixes TO fleetmap_server_role;
+GRANT SELECT, INSERT, UPDATE, DELETE ON images TO fleetmap_server_role;
+GRANT SELECT, INSERT, UPDATE, DELETE ON observed_objects TO fleetmap_server_role;
 GRANT PROCESS, CONNECTION ADMIN ON *.* TO fleetmap_server_role;
 
 -- operator: import and edit maps, register robots, set goals, initial poses, aborts.
@@ -27,6 +30,12 @@ GRANT SELECT, INSERT, UPDATE, DELETE ON segments TO fleetmap_operator_role;
 GRANT SELECT, INSERT, UPDATE ON robots TO fleetmap_operator_role;
 GRANT SELECT, INSERT, UPDATE ON tasks TO fleetmap_operator_role;
 GRANT SELECT ON trajectories TO fleetmap_operator_role;
+GRANT SELECT ON gps_fixes TO fleetmap_operator_role;
+GRANT SELECT ON observed_objects TO fleetmap_operator_role;
+GRANT SELECT ON v_robot_status TO fleetmap_operator_role;
+GRANT SELECT ON v_tasks TO fleetmap_operator_role;
+GRANT SELECT ON v_trajectory_points TO fleetmap_operator_role;
+GRANT SELECT ON v_observed_objects TO fleetmap_operator_role;
 
 -- inspector: SELECT on the views for people, nothing else.
 GRANT SELECT ON v_maps TO fleetmap_inspector_role;
@@ -37,6 +46,8 @@ GRANT SELECT ON v_tasks TO fleetmap_inspector_role;
 GRANT SELECT ON v_trajectory_points TO fleetmap_inspector_role;
 GRANT SELECT ON v_requests TO fleetmap_inspector_role;
 GRANT SELECT ON v_answers TO fleetmap_inspector_role;
+GRANT SELECT ON v_observed_objects TO fleetmap_inspector_role;
+GRANT SELECT ON v_gps_fixes TO fleetmap_inspector_role;
 
 -- robot: INSERT requests; read and delete its own answers only (SPEC 5.1).
 GRANT INSERT ON rr TO fleetmap_robot_role;

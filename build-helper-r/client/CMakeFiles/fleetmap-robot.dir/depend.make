@@ -1,0 +1,2 @@
+# Empty dependencies file for fleetmap-robot.
+# This may be replaced when dependencies are built.

@@ -1,0 +1,41 @@
+file(REMOVE_RECURSE
+  "CMakeFiles/fleetmap_server_core.dir/handlers/alive.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/alive.cpp.o.d"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/get_map.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/get_map.cpp.o.d"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/get_path.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/get_path.cpp.o.d"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/get_pos_end.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/get_pos_end.cpp.o.d"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/get_pos_ini.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/get_pos_ini.cpp.o.d"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/handler.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/handler.cpp.o.d"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/op_ack.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/op_ack.cpp.o.d"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/ready.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/ready.cpp.o.d"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/send_gps.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/send_gps.cpp.o.d"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/send_image.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/send_image.cpp.o.d"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/send_pos.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/send_pos.cpp.o.d"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/set_object.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/set_object.cpp.o.d"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/stopped.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/handlers/stopped.cpp.o.d"
+  "CMakeFiles/fleetmap_server_core.dir/map_cache.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/map_cache.cpp.o.d"
+  "CMakeFiles/fleetmap_server_core.dir/request_loop.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/request_loop.cpp.o.d"
+  "CMakeFiles/fleetmap_server_core.dir/server_config.cpp.o"
+  "CMakeFiles/fleetmap_server_core.dir/server_config.cpp.o.d"
+  "libfleetmap_server_core.a"
+  "libfleetmap_server_core.pdb"
+)
+
+# Per-language clean rules from dependency scanning.
+foreach(lang CXX)
+  include(CMakeFiles/fleetmap_server_core.dir/cmake_clean_${lang}.cmake OPTIONAL)
+endforeach()

@@ -1,0 +1,3 @@
+file(REMOVE_RECURSE
+  "libfleetmap_server_core.a"
+)

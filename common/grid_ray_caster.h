@@ -1,0 +1,47 @@
+#pragma once
+// The fast RayCaster: rays walk a SegmentGrid (common/segment_grid.h) cell by cell in
+// the order they cross them (Amanatides & Woo), test the walls listed in each cell with
+// the shared exact test (common/ray_segment.h), and jump across empty space by each
+// empty cell's skip distance. A walk ends when the nearest hit so far lies within the
+// cell just tested, or at rmax. Stairs and ramps are judged as a whole
+// (common/ray_rules.h) the first time the walk meets a cell that lists them.
+//
+// Results equal SeedRayCaster's: same segments, same test, and the grid only decides
+// which segments are tested (tests/common/ray_caster_equivalence_test.cpp).
+#include <cstddef>
+#include <memory>
+
+#include "common/map.h"
+#include "common/ray_caster.h"
+#include "common/ray_rules.h"
+#include "common/segment_grid.h"
+
+namespace fleetmap {
+
+struct GridOptions {
+  double cell = 1.0;       // metres (bench-raycast compares sizes)
+  bool skip_empty = true;  // false: plain cell-by-cell walk (the baseline)
+};
+
+class GridRayCaster : public RayCaster {
+ public:
+  // Throws std::invalid_argument when a ramp's surface encoding is wrong.
+  GridRayCaster(const Map& map, RayCasterOptions options, GridOptions grid = {});
+
+  double cast_direction(Point origin, Point dir) const override;
+  const RayCasterOptions& options() const override { return options_; }
+
+  size_t memory_bytes() const;  // the grid and the stairs and ramps it refers to
+  const SegmentGrid& grid() const { return grid_; }
+
+ private:
+  RayCasterOptions options_;
+  GridOptions grid_options_;
+  LaserObstacles obstacles_;  // for the stairs and ramps; walls live in the grid
+  SegmentGrid grid_;
+};
+
+// The fast caster with its default options (what the robot uses).
+std::unique_ptr<RayCaster> make_fast_ray_caster(const Map& map, RayCasterOptions options);
+
+}  // namespace fleetmap

@@ -1,0 +1,136 @@
+#include "protocol/fleet_store.h"
+
+#include <map>
+
+#include "common/number_format.h"
+#include "protocol/connection.h"
+#include "protocol/sql_util.h"
+
+namespace fleetmap {
+
+unsigned FleetStore::add_robot(const std::string& name, const std::string& password, const std::string& map,
+                               int max_connections) {
+  mysqlpp::Query q = c_.query();
+  q << "CALL robot_add(" << mysqlpp::quote << name << ", " << mysqlpp::quote << password << ", " << mysqlpp::quote
+    << map << ", " << max_connections << ")";
+  try {
+    q.execute();
+  } catch (const mysqlpp::BadQuery& e) {
+    if (e.errnum() == 1644) throw std::invalid_argument(e.what());  // SIGNAL from the procedure: its reason
+    throw;
+  }
+  return robot_id(name);
+}
+
+void FleetStore::remove_robot(const std::string& name) {
+  mysqlpp::Query q = c_.query();
+  q << "CALL robot_remove(" << mysqlpp::quote << name << ")";
+  try {
+    q.execute();
+  } catch (const mysqlpp::BadQuery& e) {
+    if (e.errnum() == 1644) throw RobotNotFound(name);
+    throw;
+  }
+}
+
+unsigned FleetStore::robot_id(const std::string& name) {
+  mysqlpp::Query q = c_.query();
+  q << "SELECT id FROM robots WHERE db_user = " << mysqlpp::quote << name << " AND removed_at IS NULL";
+  mysqlpp::StoreQueryResult r = q.store();
+  if (r.empty()) throw RobotNotFound(name);
+  return static_cast<unsigned>(sql::to_uint(r[0][0]));
+}
+
+std::vector<RobotStatus> FleetStore::status() {
+  mysqlpp::Query q = c_.query(
+      "SELECT robot_id, name, COALESCE(map, ''), state, x, y, theta, v, COALESCE(last_seen, ''), task_id,"
+      " COALESCE(task_state, ''), goal_x, goal_y FROM v_robot_status ORDER BY name");
+  std::vector<RobotStatus> out;
+  for (const mysqlpp::Row& r : q.store()) {
+    RobotStatus s;
+    s.id = static_cast<unsigned>(sql::to_uint(r[0]));
+    s.name = sql::to_string(r[1]);
+    s.map = sql::to_string(r[2]);
+    s.state = sql::to_string(r[3]);
+    s.x = sql::opt_double(r[4]);
+    s.y = sql::opt_double(r[5]);
+    s.theta = sql::opt_double(r[6]);
+    s.v = sql::opt_double(r[7]);
+    s.last_seen = sql::to_string(r[8]);
+    if (!r[9].is_null()) s.task_id = sql::to_uint(r[9]);
+    s.task_state = sql::to_string(r[10]);
+    s.goal_x = sql::opt_double(r[11]);
+    s.goal_y = sql::opt_double(r[12]);
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+unsigned long long FleetStore::assign_goal(const std::string& robot, double x, double y) {
+  Transaction tx(c_);
+  const unsigned id = robot_id(robot);
+  mysqlpp::Query q = c_.query();
+  q << "INSERT INTO tasks (robot_id, goal_x, goal_y) VALUES (" << id << ", " << format_number(x) << ", "
+    << format_number(y) << ")";
+  const unsigned long long task = q.execute().insert_id();
+  // The previous open task: never pushed -> aborted now; pushed -> the server pushes Abort.
+  q.reset();
+  q << "UPDATE tasks SET state = IF(answer_id IS NULL, 'aborted', state), abort_requested_at = SYSDATE(6),"
+       " reason = 'replaced by task "
+    << task << "' WHERE robot_id = " << id << " AND id <> " << task
+    << " AND state IN ('assigned', 'acknowledged', 'active')";
+  q.execute();
+  tx.commit();
+  return task;
+}
+
+bool FleetStore::request_abort(const std::string& robot, const std::string& reason) {
+  const unsigned id = robot_id(robot);
+  mysqlpp::Query q = c_.query();
+  q << "UPDATE tasks SET abort_requested_at = SYSDATE(6), reason = " << mysqlpp::quote << reason.substr(0, 255)
+    << " WHERE robot_id = " << id << " AND state IN ('assigned', 'acknowledged', 'active')"
+    << " AND abort_requested_at IS NULL";
+  return q.execute().rows() > 0;
+}
+
+void FleetStore::set_initial_pose(const std::string& robot, double x, double y, std::optional<double> theta) {
+  const unsigned id = robot_id(robot);
+  mysqlpp::Query q = c_.query();
+  q << "UPDATE robots SET ini_x = " << format_number(x) << ", ini_y = " << format_number(y)
+    << ", ini_theta = " << (theta ? format_number(*theta) : "NULL") << " WHERE id = " << id;
+  q.execute();
+}
+
+std::vector<TaskInfo> FleetStore::tasks(const std::optional<std::string>& robot, size_t limit) {
+  mysqlpp::Query q = c_.query();
+  q << "SELECT id, robot, goal_x, goal_y, state, reason, created_at, updated_at FROM v_tasks";
+  if (robot) q << " WHERE robot = " << mysqlpp::quote << *robot;
+  q << " ORDER BY id DESC LIMIT " << limit;
+  std::vector<TaskInfo> out;
+  for (const mysqlpp::Row& r : q.store())
+    out.push_back({sql::to_uint(r[0]), sql::to_string(r[1]), sql::to_string(r[4]), sql::to_string(r[5]),
+                   sql::to_string(r[6]), sql::to_string(r[7]), sql::to_double(r[2]), sql::to_double(r[3])});
+  return out;
+}
+
+std::vector<TrajectoryPoint> FleetStore::trajectory(const std::string& robot, const std::optional<std::string>& since) {
+  const unsigned id = robot_id(robot);
+  mysqlpp::Query q = c_.query();
+  q << "SELECT t, x, y, theta, v FROM trajectories WHERE robot_id = " << id;
+  if (since && !since->empty() && std::string("smhd").find(since->back()) != std::string::npos &&
+      since->find_first_not_of("0123456789") == since->size() - 1) {
+    static const std::map<char, long long> kSeconds{{'s', 1}, {'m', 60}, {'h', 3600}, {'d', 86400}};
+    q << " AND t >= SYSDATE(6) - INTERVAL " << std::stoll(since->substr(0, since->size() - 1)) * kSeconds.at(since->back())
+      << " SECOND";
+  } else if (since) {
+    q << " AND t >= " << mysqlpp::quote << *since;
+  }
+  q << " ORDER BY t, id";
+  std::vector<TrajectoryPoint> out;
+  for (const mysqlpp::Row& r : q.store())
+    out.push_back({sql::to_string(r[0]), sql::to_double(r[1]), sql::to_double(r[2]), sql::to_double(r[3]),
+                   sql::to_double(r[4])});
+  return out;
+}
+
+}  // namespace fleetmap

@@ -1,0 +1,62 @@
+#pragma once
+// The operator's side of robots and tasks (SPEC 4, 5.3): registering robot accounts
+// (through the robot_add / robot_remove procedures, sql/40_robot_accounts.sql), goals,
+// initial poses, aborts, and what the status views show.
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <mysql++/mysql++.h>
+
+namespace fleetmap {
+
+class RobotNotFound : public std::runtime_error {
+ public:
+  explicit RobotNotFound(const std::string& name) : std::runtime_error("no robot named '" + name + "'") {}
+};
+
+struct RobotStatus {
+  unsigned id = 0;
+  std::string name, map, state, last_seen, task_state;
+  std::optional<double> x, y, theta, v;
+  std::optional<unsigned long long> task_id;
+  std::optional<double> goal_x, goal_y;
+};
+
+struct TaskInfo {
+  unsigned long long id = 0;
+  std::string robot, state, reason, created_at, updated_at;
+  double goal_x = 0, goal_y = 0;
+};
+
+struct TrajectoryPoint {
+  std::string t;
+  double x = 0, y = 0, theta = 0, v = 0;
+};
+
+class FleetStore {
+ public:
+  explicit FleetStore(mysqlpp::Connection& c) : c_(c) {}
+
+  // Creates the account and the robots row; returns the robot id. Throws
+  // std::invalid_argument with the database's reason (bad name, short password, no map, exists).
+  unsigned add_robot(const std::string& name, const std::string& password, const std::string& map, int max_connections);
+  void remove_robot(const std::string& name);
+  std::vector<RobotStatus> status();
+  unsigned robot_id(const std::string& name);  // throws RobotNotFound
+
+  // A new goal replaces the robot's open task (which becomes aborted, "replaced by task N").
+  unsigned long long assign_goal(const std::string& robot, double x, double y);
+  // Asks the server to push Abort for the robot's open task; false when it has none.
+  bool request_abort(const std::string& robot, const std::string& reason);
+  void set_initial_pose(const std::string& robot, double x, double y, std::optional<double> theta);
+  std::vector<TaskInfo> tasks(const std::optional<std::string>& robot, size_t limit);
+  // since: a timestamp ('2026-11-28 07:00:00') or an age ('90s', '10m', '2h', '1d').
+  std::vector<TrajectoryPoint> trajectory(const std::string& robot, const std::optional<std::string>& since);
+
+ private:
+  mysqlpp::Connection& c_;
+};
+
+}  // namespace fleetmap

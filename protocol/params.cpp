@@ -1,0 +1,219 @@
+#include "protocol/params.h"
+
+#include <cmath>
+#include <limits>
+
+namespace fleetmap {
+namespace {
+
+// Largest coordinate a robot may send: the map frame's own limit (10 000 km).
+constexpr double kMaxCoordinate = 1e7;
+constexpr double kMaxSpeed = 1e3;  // m/s or rad/s: anything above is a unit error
+constexpr size_t kMaxTextBytes = 255;
+
+[[noreturn]] void bad(const std::string& field, const std::string& what) {
+  throw ProtocolError(ErrorCode::BadParams, "params." + field + ": expected " + what);
+}
+
+const Json* find(const Json& j, const char* field) {
+  auto it = j.find(field);
+  return it == j.end() ? nullptr : &*it;
+}
+
+double number(const Json& j, const char* field, double limit = kMaxCoordinate) {
+  const Json* v = find(j, field);
+  if (!v) bad(field, "a number, got nothing");
+  if (!v->is_number()) bad(field, "a number, got " + std::string(v->type_name()));
+  const double d = v->get<double>();
+  if (!std::isfinite(d)) bad(field, "a finite number");
+  if (std::abs(d) > limit) bad(field, "a number within ±" + std::to_string(limit).substr(0, 9));
+  return d;
+}
+
+std::optional<double> optional_number(const Json& j, const char* field, double limit = kMaxCoordinate) {
+  const Json* v = find(j, field);
+  if (!v || v->is_null()) return std::nullopt;
+  return number(j, field, limit);
+}
+
+long long integer(const Json& j, const char* field) {
+  const Json* v = find(j, field);
+  if (!v) bad(field, "an integer, got nothing");
+  if (!v->is_number_integer()) bad(field, "an integer, got " + std::string(v->type_name()));
+  if (v->is_number_unsigned() && v->get<unsigned long long>() > static_cast<unsigned long long>(std::numeric_limits<long long>::max()))
+    bad(field, "an integer within 64-bit range");
+  return v->get<long long>();
+}
+
+std::string text(const Json& j, const char* field) {
+  const Json* v = find(j, field);
+  if (!v) bad(field, "a string, got nothing");
+  if (!v->is_string()) bad(field, "a string, got " + std::string(v->type_name()));
+  std::string s = v->get<std::string>();
+  if (s.empty() || s.size() > kMaxTextBytes) bad(field, "a string of 1-255 bytes");
+  return s;
+}
+
+std::optional<MapEncoding> optional_encoding(const Json& j) {
+  const Json* v = find(j, "encoding");
+  if (!v || v->is_null()) return std::nullopt;
+  if (!v->is_string()) bad("encoding", "\"seed\" or \"seed+compress\"");
+  auto e = parse_map_encoding(v->get<std::string>());
+  if (!e) bad("encoding", "\"seed\" or \"seed+compress\", got \"" + v->get<std::string>() + "\"");
+  return e;
+}
+
+void require_object(const Json& j) {
+  if (!j.is_object()) throw ProtocolError(ErrorCode::BadJson, "params: expected a JSON object");
+}
+
+}  // namespace
+
+std::string_view name(MapEncoding e) { return e == MapEncoding::Seed ? "seed" : "seed+compress"; }
+
+std::optional<MapEncoding> parse_map_encoding(std::string_view s) {
+  if (s == "seed") return MapEncoding::Seed;
+  if (s == "seed+compress") return MapEncoding::SeedCompress;
+  return std::nullopt;
+}
+
+Json parse_params(std::string_view text) {
+  // A robot can SET check_constraint_checks=0 and store anything in the JSON column.
+  Json j = Json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
+  if (j.is_discarded()) throw ProtocolError(ErrorCode::BadJson, "params: expected JSON, got unparsable text");
+  require_object(j);
+  return j;
+}
+
+ReadyParams decode_ready(const Json& j) {
+  require_object(j);
+  return {integer(j, "magic"), optional_encoding(j)};
+}
+
+OpAckParams decode_op_ack(const Json& j) {
+  require_object(j);
+  const long long id = integer(j, "answer_id");
+  if (id <= 0) bad("answer_id", "a positive integer");
+  return {static_cast<unsigned long long>(id)};
+}
+
+SendPosParams decode_send_pos(const Json& j) {
+  require_object(j);
+  return {number(j, "x"), number(j, "y"), number(j, "theta", 1e3), number(j, "v", kMaxSpeed),
+          optional_number(j, "w", kMaxSpeed)};
+}
+
+SendGpsParams decode_send_gps(const Json& j) {
+  require_object(j);
+  return {number(j, "lat", 90), number(j, "lon", 180)};
+}
+
+SendImageParams decode_send_image(const Json& j) {
+  require_object(j);
+  SendImageParams p;
+  p.x = number(j, "x");
+  p.y = number(j, "y");
+  if (const Json* v = find(j, "object_id"); v && !v->is_null()) p.object_id = integer(j, "object_id");
+  p.format = text(j, "format");
+  return p;
+}
+
+GetMapParams decode_get_map(const Json& j) {
+  require_object(j);
+  GetMapParams p{number(j, "x"), number(j, "y"), number(j, "w"), number(j, "h"), optional_encoding(j)};
+  if (!(p.w > 0)) bad("w", "a width > 0");
+  if (!(p.h > 0)) bad("h", "a height > 0");
+  return p;
+}
+
+SetObjectParams decode_set_object(const Json& j) {
+  require_object(j);
+  return {number(j, "x"), number(j, "y"), text(j, "object")};
+}
+
+void decode_empty(const Json& j) { require_object(j); }
+
+Json encode(const StartParams& p) {
+  return {{"magic", p.magic}, {"robot_id", p.robot_id}, {"alive_period_s", p.alive_period_s}};
+}
+
+Json encode(const SetMapParams& p) {
+  return {{"border", {p.border[0], p.border[1], p.border[2], p.border[3]}},
+          {"obstacles", p.obstacles},
+          {"segments", p.segments},
+          {"encoding", std::string(name(p.encoding))}};
+}
+
+Json encode(const SetPathParams& p) {
+  Json w = Json::array();
+  for (Point q : p.waypoints) w.push_back({q.x, q.y});
+  return {{"waypoints", w}, {"length", p.length}};
+}
+
+Json encode(const SetPoseParams& p) {
+  Json j = {{"x", p.x}, {"y", p.y}};
+  if (p.theta) j["theta"] = *p.theta;
+  return j;
+}
+
+Json encode(const ErrorParams& p) {
+  Json j = {{"code", std::string(name(p.code))}, {"message", p.message}};
+  j["request_id"] = p.request_id ? Json(*p.request_id) : Json(nullptr);
+  return j;
+}
+
+Json encode_op_ack(unsigned long long request_id) { return {{"request_id", request_id}}; }
+Json encode_abort(const std::string& reason) { return {{"reason", reason}}; }
+
+StartParams decode_start(const Json& j) {
+  require_object(j);
+  const long long id = integer(j, "robot_id");
+  if (id <= 0) bad("robot_id", "a positive integer");
+  return {integer(j, "magic"), static_cast<unsigned>(id), number(j, "alive_period_s")};
+}
+
+SetMapParams decode_set_map(const Json& j) {
+  require_object(j);
+  SetMapParams p;
+  const Json* b = find(j, "border");
+  if (!b || !b->is_array() || b->size() != 4) bad("border", "[mx1, my1, mx4, my4]");
+  for (int i = 0; i < 4; ++i) {
+    if (!(*b)[i].is_number()) bad("border", "four numbers");
+    p.border[i] = (*b)[i].get<double>();
+  }
+  p.obstacles = static_cast<size_t>(integer(j, "obstacles"));
+  p.segments = static_cast<size_t>(integer(j, "segments"));
+  p.encoding = optional_encoding(j).value_or(MapEncoding::Seed);
+  return p;
+}
+
+SetPathParams decode_set_path(const Json& j) {
+  require_object(j);
+  SetPathParams p;
+  const Json* w = find(j, "waypoints");
+  if (!w || !w->is_array()) bad("waypoints", "an array of [x, y]");
+  for (const Json& q : *w) {
+    if (!q.is_array() || q.size() != 2 || !q[0].is_number() || !q[1].is_number()) bad("waypoints", "[x, y] pairs");
+    p.waypoints.push_back({q[0].get<double>(), q[1].get<double>()});
+  }
+  p.length = number(j, "length");
+  return p;
+}
+
+SetPoseParams decode_set_pose(const Json& j) {
+  require_object(j);
+  return {number(j, "x"), number(j, "y"), optional_number(j, "theta", 1e3)};
+}
+
+ErrorParams decode_error(const Json& j) {
+  require_object(j);
+  ErrorParams p;
+  if (const Json* r = find(j, "request_id"); r && !r->is_null()) p.request_id = static_cast<unsigned long long>(integer(j, "request_id"));
+  const Json* c = find(j, "code");
+  if (!c || !c->is_string() || !parse_error_code(c->get<std::string>())) bad("code", "an error code");
+  p.code = *parse_error_code(c->get<std::string>());
+  if (const Json* m = find(j, "message"); m && m->is_string()) p.message = m->get<std::string>();
+  return p;
+}
+
+}  // namespace fleetmap

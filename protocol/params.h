@@ -1,0 +1,77 @@
+#pragma once
+// Typed JSON parameters of every op (SPEC 5.2), with validation: a missing field, a
+// wrong type, a non-finite or out-of-range number gives ProtocolError(bad_params) naming
+// the field; params that are not a JSON object give ProtocolError(bad_json).
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "common/geometry.h"
+#include "protocol/ops.h"
+
+namespace fleetmap {
+
+using Json = nlohmann::json;
+
+class ProtocolError : public std::runtime_error {
+ public:
+  ProtocolError(ErrorCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
+  ErrorCode code() const { return code_; }
+
+ private:
+  ErrorCode code_;
+};
+
+// How a map travels in SetMap (SPEC 5.4).
+enum class MapEncoding { Seed, SeedCompress };
+std::string_view name(MapEncoding e);
+std::optional<MapEncoding> parse_map_encoding(std::string_view s);
+
+// Robot -> server.
+struct ReadyParams { long long magic = 0; std::optional<MapEncoding> encoding; };
+struct OpAckParams { unsigned long long answer_id = 0; };
+struct SendPosParams { double x = 0, y = 0, theta = 0, v = 0; std::optional<double> w; };
+struct SendGpsParams { double lat = 0, lon = 0; };
+struct SendImageParams { double x = 0, y = 0; std::optional<long long> object_id; std::string format; };
+struct GetMapParams { double x = 0, y = 0, w = 0, h = 0; std::optional<MapEncoding> encoding; };
+struct SetObjectParams { double x = 0, y = 0; std::string object; };
+
+// The params column as a JSON object; throws ProtocolError(bad_json).
+Json parse_params(std::string_view text);
+
+ReadyParams decode_ready(const Json& j);
+OpAckParams decode_op_ack(const Json& j);
+SendPosParams decode_send_pos(const Json& j);
+SendGpsParams decode_send_gps(const Json& j);
+SendImageParams decode_send_image(const Json& j);
+GetMapParams decode_get_map(const Json& j);
+SetObjectParams decode_set_object(const Json& j);
+void decode_empty(const Json& j);  // Alive, Stopped, GetPath, GetPosIni, GetPosEnd: {} (extra fields ignored)
+
+// Server -> robot.
+struct StartParams { long long magic = 0; unsigned robot_id = 0; double alive_period_s = 0; };
+struct SetMapParams { double border[4] = {0, 0, 0, 0}; size_t obstacles = 0, segments = 0; MapEncoding encoding = MapEncoding::Seed; };
+struct SetPathParams { std::vector<Point> waypoints; double length = 0; };
+struct SetPoseParams { double x = 0, y = 0; std::optional<double> theta; };
+struct ErrorParams { std::optional<unsigned long long> request_id; ErrorCode code = ErrorCode::Internal; std::string message; };
+
+Json encode(const StartParams& p);
+Json encode(const SetMapParams& p);
+Json encode(const SetPathParams& p);
+Json encode(const SetPoseParams& p);  // SetPosIni (theta optional) and SetPosEnd
+Json encode(const ErrorParams& p);
+Json encode_op_ack(unsigned long long request_id);
+Json encode_abort(const std::string& reason);
+
+StartParams decode_start(const Json& j);
+SetMapParams decode_set_map(const Json& j);
+SetPathParams decode_set_path(const Json& j);
+SetPoseParams decode_set_pose(const Json& j);
+ErrorParams decode_error(const Json& j);
+
+}  // namespace fleetmap

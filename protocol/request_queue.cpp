@@ -1,0 +1,63 @@
+#include "protocol/request_queue.h"
+
+#include "protocol/sql_util.h"
+
+namespace fleetmap {
+
+std::vector<std::string> RequestQueue::waiting_accounts(size_t limit) {
+  mysqlpp::Query q = c_.query();
+  q << "SELECT db_user FROM rr GROUP BY db_user ORDER BY MIN(id) LIMIT " << limit;
+  std::vector<std::string> out;
+  for (const mysqlpp::Row& r : q.store()) out.push_back(sql::to_string(r[0]));
+  return out;
+}
+
+std::vector<Request> RequestQueue::requests_of(const std::string& db_user, size_t limit) {
+  mysqlpp::Query q = c_.query();
+  q << "SELECT id, robot_id, db_user, op, params, payload, created_at FROM rr WHERE db_user = " << mysqlpp::quote
+    << db_user << " ORDER BY id LIMIT " << limit;
+  std::vector<Request> out;
+  for (const mysqlpp::Row& r : q.store()) {
+    Request req;
+    req.id = sql::to_uint(r[0]);
+    if (!r[1].is_null()) req.robot_id = static_cast<unsigned>(sql::to_uint(r[1]));
+    req.db_user = sql::to_string(r[2]);
+    req.op = sql::to_string(r[3]);
+    req.params = sql::to_string(r[4]);
+    if (!r[5].is_null()) req.payload = sql::to_string(r[5]);
+    req.created_at = sql::to_string(r[6]);
+    out.push_back(std::move(req));
+  }
+  return out;
+}
+
+unsigned long long RequestQueue::insert(const Answer& a) {
+  mysqlpp::Query q = c_.query();
+  q << "INSERT INTO sa (robot_id, db_user, request_id, op, params, payload, created_at) VALUES (" << a.robot_id << ", "
+    << mysqlpp::quote << a.db_user << ", ";
+  if (a.request_id) q << *a.request_id;
+  else q << "NULL";
+  // replace: an error message may quote a robot's invalid UTF-8; it must not stop the answer.
+  q << ", " << mysqlpp::quote << std::string(name(a.op)) << ", " << mysqlpp::quote
+    << a.params.dump(-1, ' ', false, Json::error_handler_t::replace) << ", ";
+  if (a.payload) q << mysqlpp::quote << *a.payload;
+  else q << "NULL";
+  q << ", SYSDATE(6))";
+  return q.execute().insert_id();
+}
+
+void RequestQueue::remove(const std::vector<unsigned long long>& ids) {
+  if (ids.empty()) return;
+  mysqlpp::Query q = c_.query();
+  q << "DELETE FROM rr WHERE id IN (";
+  for (size_t i = 0; i < ids.size(); ++i) q << (i ? "," : "") << ids[i];
+  q << ")";
+  q.execute();
+}
+
+size_t RequestQueue::waiting() {
+  mysqlpp::Query q = c_.query("SELECT COUNT(*) FROM rr");
+  return static_cast<size_t>(sql::to_uint(q.store()[0][0]));
+}
+
+}  // namespace fleetmap

@@ -1,0 +1,51 @@
+#pragma once
+// The server's side of the rr/sa tables (SPEC 5.1, 5.3): the one place that writes SQL
+// against them for the server. Used inside the caller's transaction.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <mysql++/mysql++.h>
+
+#include "protocol/params.h"
+
+namespace fleetmap {
+
+struct Request {
+  unsigned long long id = 0;
+  std::optional<unsigned> robot_id;  // as the robot wrote it (never trusted)
+  std::string db_user;               // set by the database (trigger rr_stamp)
+  std::string op;
+  std::string params;
+  std::optional<std::string> payload;
+  std::string created_at;
+};
+
+struct Answer {
+  unsigned robot_id = 0;
+  std::string db_user;
+  std::optional<unsigned long long> request_id;
+  AnswerOp op = AnswerOp::Error;
+  Json params;
+  std::optional<std::string> payload;
+};
+
+class RequestQueue {
+ public:
+  explicit RequestQueue(mysqlpp::Connection& c) : c_(c) {}
+
+  // Accounts with waiting requests, the longest-waiting first (a plain read: no locks).
+  std::vector<std::string> waiting_accounts(size_t limit);
+
+  // One account's requests in id order.
+  std::vector<Request> requests_of(const std::string& db_user, size_t limit);
+
+  unsigned long long insert(const Answer& a);  // the sa.id
+  void remove(const std::vector<unsigned long long>& request_ids);
+  size_t waiting();                             // rows in rr
+
+ private:
+  mysqlpp::Connection& c_;
+};
+
+}  // namespace fleetmap

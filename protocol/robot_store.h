@@ -1,0 +1,71 @@
+#pragma once
+// Robots, their tasks and what they report, as the server sees them (tables robots,
+// tasks, trajectories, gps_fixes, images, observed_objects). Used inside the caller's
+// transaction; a robot's rows are changed only by whoever holds its robots row lock.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <mysql++/mysql++.h>
+
+#include "protocol/params.h"
+
+namespace fleetmap {
+
+struct RobotRow {
+  unsigned id = 0;
+  std::string db_user;
+  std::optional<unsigned> map_id;
+  std::string state;  // offline, ready, moving, stopped, lost
+  std::optional<long long> magic;  // of the session; nullopt: no Ready yet
+  std::optional<double> x, y, theta, v;
+  std::optional<double> ini_x, ini_y, ini_theta;
+  bool removed = false;
+  bool registered() const { return magic.has_value() && !removed; }
+};
+
+struct TaskRow {
+  unsigned long long id = 0;
+  unsigned robot_id = 0;
+  double goal_x = 0, goal_y = 0;
+  std::string state;  // assigned, acknowledged, active, done, aborted, failed
+  std::optional<unsigned long long> answer_id, abort_answer_id;
+  bool abort_requested = false;
+  std::string reason;
+};
+
+class RobotStore {
+ public:
+  explicit RobotStore(mysqlpp::Connection& c) : c_(c) {}
+
+  // Claims robots, not rows (SPEC 5.3): locks the robots rows of these accounts that no
+  // other server holds (FOR UPDATE SKIP LOCKED). Accounts without a row are not returned.
+  std::vector<RobotRow> claim(const std::vector<std::string>& accounts, size_t limit);
+  std::optional<RobotRow> claim(unsigned robot_id);
+
+  // Anything a robot sends refreshes it; a lost robot comes back.
+  void seen(unsigned id, const std::string& at);
+  void start_session(unsigned id, long long magic);
+  void set_state(unsigned id, const std::string& state);
+  void record_pose(unsigned id, const SendPosParams& p, const std::string& at);
+  void record_gps(unsigned id, const SendGpsParams& p, std::optional<Point> map_xy, const std::string& at);
+  void record_image(unsigned id, const SendImageParams& p, const std::string& data, const std::string& at);
+  void record_object(unsigned id, std::optional<unsigned> map_id, const SetObjectParams& p, const std::string& at);
+
+  std::optional<TaskRow> open_task(unsigned robot_id);  // newest task not done/aborted/failed
+  std::optional<TaskRow> task_pushed_as(unsigned robot_id, unsigned long long answer_id);
+  void set_task_state(unsigned long long task_id, const std::string& state, const std::string& reason = "");
+  void set_task_answer(unsigned long long task_id, unsigned long long answer_id);
+  void set_task_abort_answer(unsigned long long task_id, unsigned long long answer_id);
+
+  // Robots with a task whose SetPosEnd or Abort is still to be pushed.
+  std::vector<unsigned> robots_with_pushes(size_t limit);
+  // Registered robots silent for longer than `seconds` with nothing waiting in rr.
+  std::vector<unsigned> silent_robots(double seconds, size_t limit);
+
+ private:
+  RobotRow read_robot(const mysqlpp::Row& r);
+  mysqlpp::Connection& c_;
+};
+
+}  // namespace fleetmap

@@ -1,0 +1,42 @@
+#include "server/handlers/handler.h"
+
+#include "common/map_window.h"
+#include "protocol/map_codec.h"
+
+namespace fleetmap {
+
+Handler handler_for(RequestOp op) {
+  switch (op) {
+    case RequestOp::Ready: return handle_ready;
+    case RequestOp::Alive: return handle_alive;
+    case RequestOp::Stopped: return handle_stopped;
+    case RequestOp::OpAck: return handle_op_ack;
+    case RequestOp::SendPos: return handle_send_pos;
+    case RequestOp::SendGPS: return handle_send_gps;
+    case RequestOp::SendImage: return handle_send_image;
+    case RequestOp::GetMap: return handle_get_map;
+    case RequestOp::GetPath: return handle_get_path;
+    case RequestOp::GetPosIni: return handle_get_pos_ini;
+    case RequestOp::GetPosEnd: return handle_get_pos_end;
+    case RequestOp::SetObject: return handle_set_object;
+  }
+  return nullptr;
+}
+
+void answer_map(HandlerContext& ctx, const Rect* window, MapEncoding encoding) {
+  if (!ctx.robot.map_id)
+    throw ProtocolError(ErrorCode::Internal, "no map is assigned to this robot; ask an operator (fleetmap robot add --map)");
+  const std::optional<MapInfo> info = ctx.maps.info(*ctx.robot.map_id);
+  if (!info) throw ProtocolError(ErrorCode::Internal, "the robot's map was deleted; ask an operator");
+  Map m;
+  if (window) {
+    const Rect r = intersection(*window, info->border.rect());
+    if (r.empty()) throw ProtocolError(ErrorCode::BadParams, "params: expected a window that overlaps the map's border");
+    m = ctx.maps.window(info->id, r);
+  } else {
+    m = *ctx.map_cache.get(ctx.maps, info->id, info->name);
+  }
+  ctx.answer(AnswerOp::SetMap, encode(set_map_params(m, encoding)), encode_map(m, encoding));
+}
+
+}  // namespace fleetmap

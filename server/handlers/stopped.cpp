@@ -1,0 +1,19 @@
+// Stopped (SPEC 5.2, 5.3): the robot stands still; an active task whose goal it reached
+// is done.
+#include <cmath>
+
+#include "server/handlers/handler.h"
+
+namespace fleetmap {
+
+void handle_stopped(HandlerContext& ctx) {
+  decode_empty(ctx.params);
+  ctx.robots.set_state(ctx.robot.id, "stopped");
+  if (auto task = ctx.robots.open_task(ctx.robot.id); task && task->state == "active" && ctx.robot.x && ctx.robot.y) {
+    if (std::hypot(*ctx.robot.x - task->goal_x, *ctx.robot.y - task->goal_y) <= ctx.config.goal_tolerance_m)
+      ctx.robots.set_task_state(task->id, "done");
+  }
+  ctx.op_ack();
+}
+
+}  // namespace fleetmap

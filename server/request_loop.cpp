@@ -1,0 +1,243 @@
+#include "server/request_loop.h"
+
+#include <algorithm>
+#include <set>
+#include <thread>
+
+#include <spdlog/spdlog.h>
+
+#include "protocol/connection.h"
+#include "protocol/map_store.h"
+#include "protocol/ops.h"
+#include "server/handlers/handler.h"
+
+namespace fleetmap {
+namespace {
+
+constexpr unsigned kLockWaitTimeout = 1205;
+constexpr unsigned kDeadlock = 1213;
+
+bool retryable(const mysqlpp::BadQuery& e) { return e.errnum() == kLockWaitTimeout || e.errnum() == kDeadlock; }
+
+// Client-side errors: the connection is gone (server restart, KILL, network).
+bool connection_lost(unsigned errnum) { return errnum >= 2000 && errnum < 3000; }
+
+}  // namespace
+
+RequestLoop::RequestLoop(DbSettings db, const ServerConfig& config, MapCache& cache, const std::atomic<bool>& stop,
+                         int worker, bool housekeeping)
+    : db_(std::move(db)), config_(config), cache_(cache), stop_(stop), worker_(worker), housekeeping_(housekeeping) {}
+
+void RequestLoop::connect_with_retry() {
+  double wait_s = 0.1;
+  while (!stop_) {
+    try {
+      conn_ = connect(db_);
+      // Wait on a lock only briefly: a robot holding sa locks must not stall everyone (SPEC 5.3).
+      execute(*conn_, "SET SESSION innodb_lock_wait_timeout = " + std::to_string(config_.lock_wait_timeout_s));
+      spdlog::info("worker {}: connected as {}", worker_, describe(db_));
+      return;
+    } catch (const std::exception& e) {
+      spdlog::warn("worker {}: {}; retrying in {:.1f} s", worker_, e.what(), wait_s);
+      std::this_thread::sleep_for(std::chrono::duration<double>(wait_s));
+      wait_s = std::min(wait_s * 2, 5.0);
+    }
+  }
+}
+
+void RequestLoop::run() {
+  connect_with_retry();
+  // Idle back-off: poll again at once after work, then wait longer and longer, up to
+  // poll_max_ms, while rr stays empty (SPEC 9: a tight loop burns a core).
+  double idle_ms = 0;
+  while (!stop_) {
+    size_t done = 0;
+    try {
+      if (!conn_) connect_with_retry();
+      if (!conn_) break;
+      done = serve_batch();
+      if (housekeeping_ && std::chrono::steady_clock::now() >= next_housekeeping_) {
+        done += push_operations();
+        mark_lost_robots();
+        next_housekeeping_ = std::chrono::steady_clock::now() + std::chrono::milliseconds(100);
+      }
+    } catch (const mysqlpp::BadQuery& e) {
+      if (connection_lost(e.errnum())) {
+        spdlog::warn("worker {}: connection lost ({}); reconnecting", worker_, e.what());
+        conn_.reset();
+      } else if (retryable(e)) {
+        spdlog::warn("worker {}: {} (error {}); looking for a robot that blocks, then retrying", worker_, e.what(),
+                     e.errnum());
+        end_blocking_robots();
+      } else {
+        spdlog::error("worker {}: database error {}: {}", worker_, e.errnum(), e.what());
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      }
+      continue;
+    } catch (const mysqlpp::Exception& e) {
+      spdlog::warn("worker {}: {}; reconnecting", worker_, e.what());
+      conn_.reset();
+      continue;
+    }
+    if (done > 0) {
+      idle_ms = 0;
+    } else {
+      idle_ms = std::clamp(idle_ms * 2, 0.25, config_.poll_max_ms);
+      std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(idle_ms));
+    }
+  }
+  spdlog::info("worker {}: stopped", worker_);
+}
+
+size_t RequestLoop::serve_batch() {
+  RequestQueue queue(*conn_);
+  RobotStore robots(*conn_);
+  const std::vector<std::string> accounts = queue.waiting_accounts(config_.batch_robots * 4);
+  if (accounts.empty()) return 0;
+
+  Transaction tx(*conn_);
+  std::vector<RobotRow> claimed = robots.claim(accounts, config_.batch_robots);
+  size_t handled = 0;
+  for (RobotRow& robot : claimed) {
+    const std::vector<Request> reqs = queue.requests_of(robot.db_user, config_.batch_requests);
+    if (reqs.empty()) continue;  // another server took them between our read and our lock
+    std::vector<unsigned long long> ids;
+    for (const Request& req : reqs) {
+      if (!robot.removed) handle(robot, req, queue, robots);
+      ids.push_back(req.id);
+    }
+    queue.remove(ids);
+    if (!robot.removed) robots.seen(robot.id, reqs.back().created_at);
+    handled += reqs.size();
+  }
+  // Requests from accounts that are no robot (inserted by hand by an administrator):
+  // nobody can read an answer; drop them so they do not block the queue head.
+  if (claimed.size() < accounts.size()) {
+    mysqlpp::Query q = conn_->query();
+    q << "SELECT id FROM rr WHERE db_user NOT IN (SELECT db_user FROM robots) LIMIT 100";
+    std::vector<unsigned long long> orphans;
+    for (const mysqlpp::Row& r : q.store()) orphans.push_back(std::stoull(std::string(r[0])));
+    if (!orphans.empty()) {
+      spdlog::warn("worker {}: dropping {} request(s) from accounts that are no robot", worker_, orphans.size());
+      queue.remove(orphans);
+      handled += orphans.size();
+    }
+  }
+  tx.commit();
+  return handled;
+}
+
+void RequestLoop::handle(RobotRow& robot, const Request& req, RequestQueue& queue, RobotStore& robots) {
+  MapStore maps(*conn_);
+  HandlerContext ctx{config_, robots, maps, cache_, robot, req, {}, {}};
+  // Each request in a savepoint: a database error in one handler undoes that request's
+  // work only, and the robot gets an Error instead.
+  execute(*conn_, "SAVEPOINT request");
+  try {
+    const std::optional<RequestOp> op = parse_request_op(req.op);
+    if (!op) throw ProtocolError(ErrorCode::UnknownOp, "unknown op '" + req.op.substr(0, 16) + "'");
+    if (req.robot_id && *req.robot_id != robot.id)
+      throw ProtocolError(ErrorCode::NotYourRobot, "robot_id " + std::to_string(*req.robot_id) +
+                                                       " is not this account's robot (" + std::to_string(robot.id) + ")");
+    if (*op != RequestOp::Ready && !robot.registered())
+      throw ProtocolError(ErrorCode::NotRegistered, "send Ready first");
+    ctx.params = parse_params(req.params);
+    handler_for(*op)(ctx);
+  } catch (const ProtocolError& e) {
+    ctx.answers.clear();
+    ctx.answers.push_back({robot.id, robot.db_user, req.id, AnswerOp::Error,
+                           encode(ErrorParams{req.id, e.code(), e.what()}), std::nullopt});
+    execute(*conn_, "ROLLBACK TO SAVEPOINT request");
+    spdlog::debug("worker {}: {} request {} ({}): {} {}", worker_, robot.db_user, req.id, req.op.substr(0, 16),
+                  name(e.code()), e.what());
+  } catch (const mysqlpp::BadQuery& e) {
+    if (retryable(e) || connection_lost(e.errnum())) throw;  // the whole transaction goes again
+    execute(*conn_, "ROLLBACK TO SAVEPOINT request");
+    spdlog::error("worker {}: {} request {} ({}): database error {}: {}", worker_, robot.db_user, req.id,
+                  req.op.substr(0, 16), e.errnum(), e.what());
+    ctx.answers.clear();
+    ctx.answers.push_back({robot.id, robot.db_user, req.id, AnswerOp::Error,
+                           encode(ErrorParams{req.id, ErrorCode::Internal, "the server could not store this request"}),
+                           std::nullopt});
+  } catch (const std::exception& e) {
+    execute(*conn_, "ROLLBACK TO SAVEPOINT request");
+    spdlog::error("worker {}: {} request {} ({}): {}", worker_, robot.db_user, req.id, req.op.substr(0, 16), e.what());
+    ctx.answers.clear();
+    ctx.answers.push_back({robot.id, robot.db_user, req.id, AnswerOp::Error,
+                           encode(ErrorParams{req.id, ErrorCode::Internal, e.what()}), std::nullopt});
+  }
+  for (const Answer& a : ctx.answers) queue.insert(a);
+}
+
+size_t RequestLoop::push_operations() {
+  RobotStore robots(*conn_);
+  RequestQueue queue(*conn_);
+  size_t pushed = 0;
+  for (unsigned id : robots.robots_with_pushes(config_.batch_robots)) {
+    Transaction tx(*conn_);
+    std::optional<RobotRow> robot = robots.claim(id);
+    if (!robot) continue;  // another worker or server holds it
+    std::optional<TaskRow> task = robots.open_task(id);
+    if (!task) continue;
+    if (task->abort_requested && !task->abort_answer_id) {
+      if (!task->answer_id) {
+        robots.set_task_state(task->id, "aborted");  // the robot never heard of it
+      } else {
+        const auto sa_id = queue.insert({id, robot->db_user, std::nullopt, AnswerOp::Abort, encode_abort(task->reason), std::nullopt});
+        robots.set_task_abort_answer(task->id, sa_id);
+        spdlog::info("pushed Abort of task {} to {}", task->id, robot->db_user);
+      }
+      ++pushed;
+    } else if (!task->answer_id) {
+      const auto sa_id = queue.insert({id, robot->db_user, std::nullopt, AnswerOp::SetPosEnd,
+                                       encode(SetPoseParams{task->goal_x, task->goal_y, std::nullopt}), std::nullopt});
+      robots.set_task_answer(task->id, sa_id);
+      spdlog::info("pushed SetPosEnd of task {} ({}, {}) to {}", task->id, task->goal_x, task->goal_y, robot->db_user);
+      ++pushed;
+    }
+    tx.commit();
+  }
+  return pushed;
+}
+
+size_t RequestLoop::mark_lost_robots() {
+  RobotStore robots(*conn_);
+  size_t lost = 0;
+  const double silent_s = config_.alive_period_s * config_.lost_after_periods;
+  for (unsigned id : robots.silent_robots(silent_s, config_.batch_robots)) {
+    Transaction tx(*conn_);
+    std::optional<RobotRow> robot = robots.claim(id);
+    if (!robot) continue;
+    robots.set_state(id, "lost");
+    if (auto task = robots.open_task(id)) robots.set_task_state(task->id, "failed", "robot lost");
+    tx.commit();
+    spdlog::warn("robot {} is lost (silent for more than {:.1f} s)", robot->db_user, silent_s);
+    ++lost;
+  }
+  return lost;
+}
+
+void RequestLoop::end_blocking_robots() {
+  // A robot's open transaction holding locks on sa (a SELECT ... FOR UPDATE or DELETE on
+  // sa_mine left open) blocks every insert into sa; no grant prevents it (SPEC 5.3).
+  try {
+    mysqlpp::Query q = conn_->query(
+        "SELECT t.trx_mysql_thread_id, p.USER, t.trx_started FROM information_schema.INNODB_TRX t"
+        " JOIN information_schema.PROCESSLIST p ON p.ID = t.trx_mysql_thread_id"
+        " WHERE t.trx_lock_structs > 0 AND p.USER IN (SELECT db_user FROM robots)");
+    for (const mysqlpp::Row& r : q.store()) {
+      const std::string thread = std::string(r[0]), user = std::string(r[1]);
+      try {
+        execute(*conn_, "KILL CONNECTION " + std::to_string(std::stoull(thread)));
+        spdlog::warn("ended connection {} of robot {}: its transaction (open since {}) held locks that blocked the server",
+                     thread, user, std::string(r[2]));
+      } catch (const mysqlpp::BadQuery& e) {
+        spdlog::warn("could not end connection {} of robot {}: {}", thread, user, e.what());
+      }
+    }
+  } catch (const mysqlpp::Exception& e) {
+    spdlog::error("looking for blocking robots failed: {}", e.what());
+  }
+}
+
+}  // namespace fleetmap

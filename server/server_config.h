@@ -1,0 +1,27 @@
+#pragma once
+// The map server's own settings: defaults, then the [server] section of the config file,
+// then flags (server_main.cpp). Documented in etc/fleetmap.conf.sample.
+#include <map>
+#include <string>
+
+namespace fleetmap {
+
+struct ServerConfig {
+  double alive_period_s = 1.0;        // told to robots in Start
+  double lost_after_periods = 5;      // silent this many periods -> lost
+  int workers = 2;                    // threads, each with its own connection
+  double poll_max_ms = 10;            // idle back-off ceiling when rr is empty
+  size_t batch_robots = 16;           // robots claimed per transaction
+  size_t batch_requests = 32;         // requests of one robot per transaction
+  size_t max_full_map_segments = 20000;  // larger maps go out as a window on Ready
+  double ready_window_m = 100;        // that window's side
+  double max_window_m = 1000;         // GetMap w and h are capped to this
+  size_t max_image_bytes = 8u << 20;  // SendImage payload limit
+  double goal_tolerance_m = 0.5;      // Stopped within this of the goal -> task done
+  int lock_wait_timeout_s = 1;        // then find and end the robot connection that blocks
+
+  // Applies "key = value" settings; throws std::invalid_argument naming a bad key or value.
+  void apply(const std::map<std::string, std::string>& settings);
+};
+
+}  // namespace fleetmap
