@@ -79,8 +79,15 @@ std::optional<MapEncoding> parse_map_encoding(std::string_view s) {
 
 Json parse_params(std::string_view text) {
   // A robot can SET check_constraint_checks=0 and store anything in the JSON column.
-  Json j = Json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
-  if (j.is_discarded()) throw ProtocolError(ErrorCode::BadJson, "params: expected JSON, got unparsable text");
+  Json j;
+  try {
+    j = Json::parse(text.begin(), text.end());
+  } catch (const Json::out_of_range&) {
+    // Valid JSON whose number does not fit a double (1e999): a field out of range.
+    throw ProtocolError(ErrorCode::BadParams, "params: expected finite numbers, got one out of double range");
+  } catch (const Json::exception&) {
+    throw ProtocolError(ErrorCode::BadJson, "params: expected JSON, got unparsable text");
+  }
   require_object(j);
   return j;
 }

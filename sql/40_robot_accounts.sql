@@ -33,7 +33,8 @@ BEGIN
   SET @fleetmap_sql = NULL;
   -- A robot added again keeps its id and its history.
   INSERT INTO robots (db_user, map_id) VALUES (p_name, v_map)
-    ON DUPLICATE KEY UPDATE removed_at = NULL, map_id = v_map, state = 'offline', magic = NULL, session_at = NULL;
+    ON DUPLICATE KEY UPDATE removed_at = NULL, map_id = v_map, state = 'offline', magic = NULL, session_at = NULL,
+      ini_x = NULL, ini_y = NULL, ini_theta = NULL;
 END//
 
 CREATE OR REPLACE PROCEDURE robot_remove(IN p_name VARCHAR(80))
@@ -59,6 +60,10 @@ BEGIN
   CLOSE cur;
   SET @fleetmap_sql = NULL;
   UPDATE robots SET removed_at = SYSDATE(6), state = 'offline', magic = NULL, session_at = NULL WHERE db_user = p_name;
+  -- Undelivered traffic is a mailbox, not history: an account created later under the same
+  -- name must not read the old robot's answers.
+  DELETE FROM sa WHERE db_user = p_name;
+  DELETE FROM rr WHERE db_user = p_name;
   UPDATE tasks t JOIN robots r ON r.id = t.robot_id SET t.state = 'failed', t.reason = 'robot removed'
     WHERE r.db_user = p_name AND t.state IN ('assigned', 'acknowledged', 'active');
 END//

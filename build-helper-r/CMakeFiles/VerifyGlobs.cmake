@@ -35,6 +35,9 @@ set(OLD_GLOB
   "/work/main/tests/common/map_svg_test.cpp"
   "/work/main/tests/common/map_window_test.cpp"
   "/work/main/tests/common/ramp_stairs_test.cpp"
+  "/work/main/tests/common/ray_caster_equivalence_test.cpp"
+  "/work/main/tests/common/ray_caster_rules_test.cpp"
+  "/work/main/tests/common/ray_caster_segment_test.cpp"
   "/work/main/tests/common/seed_format_malformed_test.cpp"
   "/work/main/tests/common/seed_format_roundtrip_test.cpp"
   )
@@ -49,6 +52,7 @@ set(OLD_GLOB
   "/work/main/tests/integration/accounts_test.cpp"
   "/work/main/tests/integration/map_import_test.cpp"
   "/work/main/tests/integration/map_window_test.cpp"
+  "/work/main/tests/integration/protocol_robot_test.cpp"
   )
 if(NOT "${NEW_GLOB}" STREQUAL "${OLD_GLOB}")
   message("-- GLOB mismatch!")

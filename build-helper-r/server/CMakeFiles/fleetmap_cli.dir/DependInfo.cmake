@@ -10,6 +10,7 @@ set(CMAKE_DEPENDS_LANGUAGES
 set(CMAKE_DEPENDS_DEPENDENCY_FILES
   "/work/main/server/cli_context.cpp" "server/CMakeFiles/fleetmap_cli.dir/cli_context.cpp.o" "gcc" "server/CMakeFiles/fleetmap_cli.dir/cli_context.cpp.o.d"
   "/work/main/server/map_commands.cpp" "server/CMakeFiles/fleetmap_cli.dir/map_commands.cpp.o" "gcc" "server/CMakeFiles/fleetmap_cli.dir/map_commands.cpp.o.d"
+  "/work/main/server/robot_commands.cpp" "server/CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.o" "gcc" "server/CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.o.d"
   )
 
 # Targets to which this target links.

@@ -97,19 +97,35 @@ server/CMakeFiles/fleetmap_cli.dir/map_commands.cpp.s: cmake_force
 	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Compiling CXX source to assembly CMakeFiles/fleetmap_cli.dir/map_commands.cpp.s"
 	cd /work/main/build-helper-r/server && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -S /work/main/server/map_commands.cpp -o CMakeFiles/fleetmap_cli.dir/map_commands.cpp.s
 
+server/CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.o: server/CMakeFiles/fleetmap_cli.dir/flags.make
+server/CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.o: /work/main/server/robot_commands.cpp
+server/CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.o: server/CMakeFiles/fleetmap_cli.dir/compiler_depend.ts
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_3) "Building CXX object server/CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.o"
+	cd /work/main/build-helper-r/server && /usr/bin/ccache /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -MD -MT server/CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.o -MF CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.o.d -o CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.o -c /work/main/server/robot_commands.cpp
+
+server/CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.i: cmake_force
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Preprocessing CXX source to CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.i"
+	cd /work/main/build-helper-r/server && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -E /work/main/server/robot_commands.cpp > CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.i
+
+server/CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.s: cmake_force
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Compiling CXX source to assembly CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.s"
+	cd /work/main/build-helper-r/server && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -S /work/main/server/robot_commands.cpp -o CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.s
+
 # Object files for target fleetmap_cli
 fleetmap_cli_OBJECTS = \
 "CMakeFiles/fleetmap_cli.dir/cli_context.cpp.o" \
-"CMakeFiles/fleetmap_cli.dir/map_commands.cpp.o"
+"CMakeFiles/fleetmap_cli.dir/map_commands.cpp.o" \
+"CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.o"
 
 # External object files for target fleetmap_cli
 fleetmap_cli_EXTERNAL_OBJECTS =
 
 server/libfleetmap_cli.a: server/CMakeFiles/fleetmap_cli.dir/cli_context.cpp.o
 server/libfleetmap_cli.a: server/CMakeFiles/fleetmap_cli.dir/map_commands.cpp.o
+server/libfleetmap_cli.a: server/CMakeFiles/fleetmap_cli.dir/robot_commands.cpp.o
 server/libfleetmap_cli.a: server/CMakeFiles/fleetmap_cli.dir/build.make
 server/libfleetmap_cli.a: server/CMakeFiles/fleetmap_cli.dir/link.txt
-	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --bold --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_3) "Linking CXX static library libfleetmap_cli.a"
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --bold --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_4) "Linking CXX static library libfleetmap_cli.a"
 	cd /work/main/build-helper-r/server && $(CMAKE_COMMAND) -P CMakeFiles/fleetmap_cli.dir/cmake_clean_target.cmake
 	cd /work/main/build-helper-r/server && $(CMAKE_COMMAND) -E cmake_link_script CMakeFiles/fleetmap_cli.dir/link.txt --verbose=$(VERBOSE)
 

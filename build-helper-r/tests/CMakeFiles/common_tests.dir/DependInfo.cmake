@@ -16,6 +16,9 @@ set(CMAKE_DEPENDS_DEPENDENCY_FILES
   "/work/main/tests/common/map_svg_test.cpp" "tests/CMakeFiles/common_tests.dir/common/map_svg_test.cpp.o" "gcc" "tests/CMakeFiles/common_tests.dir/common/map_svg_test.cpp.o.d"
   "/work/main/tests/common/map_window_test.cpp" "tests/CMakeFiles/common_tests.dir/common/map_window_test.cpp.o" "gcc" "tests/CMakeFiles/common_tests.dir/common/map_window_test.cpp.o.d"
   "/work/main/tests/common/ramp_stairs_test.cpp" "tests/CMakeFiles/common_tests.dir/common/ramp_stairs_test.cpp.o" "gcc" "tests/CMakeFiles/common_tests.dir/common/ramp_stairs_test.cpp.o.d"
+  "/work/main/tests/common/ray_caster_equivalence_test.cpp" "tests/CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.o" "gcc" "tests/CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.o.d"
+  "/work/main/tests/common/ray_caster_rules_test.cpp" "tests/CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.o" "gcc" "tests/CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.o.d"
+  "/work/main/tests/common/ray_caster_segment_test.cpp" "tests/CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.o" "gcc" "tests/CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.o.d"
   "/work/main/tests/common/seed_format_malformed_test.cpp" "tests/CMakeFiles/common_tests.dir/common/seed_format_malformed_test.cpp.o" "gcc" "tests/CMakeFiles/common_tests.dir/common/seed_format_malformed_test.cpp.o.d"
   "/work/main/tests/common/seed_format_roundtrip_test.cpp" "tests/CMakeFiles/common_tests.dir/common/seed_format_roundtrip_test.cpp.o" "gcc" "tests/CMakeFiles/common_tests.dir/common/seed_format_roundtrip_test.cpp.o.d"
   )

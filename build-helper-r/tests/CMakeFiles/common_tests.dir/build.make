@@ -181,10 +181,52 @@ tests/CMakeFiles/common_tests.dir/common/ramp_stairs_test.cpp.s: cmake_force
 	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Compiling CXX source to assembly CMakeFiles/common_tests.dir/common/ramp_stairs_test.cpp.s"
 	cd /work/main/build-helper-r/tests && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -S /work/main/tests/common/ramp_stairs_test.cpp -o CMakeFiles/common_tests.dir/common/ramp_stairs_test.cpp.s
 
+tests/CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.o: tests/CMakeFiles/common_tests.dir/flags.make
+tests/CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.o: /work/main/tests/common/ray_caster_equivalence_test.cpp
+tests/CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.o: tests/CMakeFiles/common_tests.dir/compiler_depend.ts
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_9) "Building CXX object tests/CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.o"
+	cd /work/main/build-helper-r/tests && /usr/bin/ccache /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -MD -MT tests/CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.o -MF CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.o.d -o CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.o -c /work/main/tests/common/ray_caster_equivalence_test.cpp
+
+tests/CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.i: cmake_force
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Preprocessing CXX source to CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.i"
+	cd /work/main/build-helper-r/tests && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -E /work/main/tests/common/ray_caster_equivalence_test.cpp > CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.i
+
+tests/CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.s: cmake_force
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Compiling CXX source to assembly CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.s"
+	cd /work/main/build-helper-r/tests && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -S /work/main/tests/common/ray_caster_equivalence_test.cpp -o CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.s
+
+tests/CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.o: tests/CMakeFiles/common_tests.dir/flags.make
+tests/CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.o: /work/main/tests/common/ray_caster_rules_test.cpp
+tests/CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.o: tests/CMakeFiles/common_tests.dir/compiler_depend.ts
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_10) "Building CXX object tests/CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.o"
+	cd /work/main/build-helper-r/tests && /usr/bin/ccache /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -MD -MT tests/CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.o -MF CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.o.d -o CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.o -c /work/main/tests/common/ray_caster_rules_test.cpp
+
+tests/CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.i: cmake_force
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Preprocessing CXX source to CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.i"
+	cd /work/main/build-helper-r/tests && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -E /work/main/tests/common/ray_caster_rules_test.cpp > CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.i
+
+tests/CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.s: cmake_force
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Compiling CXX source to assembly CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.s"
+	cd /work/main/build-helper-r/tests && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -S /work/main/tests/common/ray_caster_rules_test.cpp -o CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.s
+
+tests/CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.o: tests/CMakeFiles/common_tests.dir/flags.make
+tests/CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.o: /work/main/tests/common/ray_caster_segment_test.cpp
+tests/CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.o: tests/CMakeFiles/common_tests.dir/compiler_depend.ts
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_11) "Building CXX object tests/CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.o"
+	cd /work/main/build-helper-r/tests && /usr/bin/ccache /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -MD -MT tests/CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.o -MF CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.o.d -o CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.o -c /work/main/tests/common/ray_caster_segment_test.cpp
+
+tests/CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.i: cmake_force
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Preprocessing CXX source to CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.i"
+	cd /work/main/build-helper-r/tests && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -E /work/main/tests/common/ray_caster_segment_test.cpp > CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.i
+
+tests/CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.s: cmake_force
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Compiling CXX source to assembly CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.s"
+	cd /work/main/build-helper-r/tests && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -S /work/main/tests/common/ray_caster_segment_test.cpp -o CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.s
+
 tests/CMakeFiles/common_tests.dir/common/seed_format_malformed_test.cpp.o: tests/CMakeFiles/common_tests.dir/flags.make
 tests/CMakeFiles/common_tests.dir/common/seed_format_malformed_test.cpp.o: /work/main/tests/common/seed_format_malformed_test.cpp
 tests/CMakeFiles/common_tests.dir/common/seed_format_malformed_test.cpp.o: tests/CMakeFiles/common_tests.dir/compiler_depend.ts
-	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_9) "Building CXX object tests/CMakeFiles/common_tests.dir/common/seed_format_malformed_test.cpp.o"
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_12) "Building CXX object tests/CMakeFiles/common_tests.dir/common/seed_format_malformed_test.cpp.o"
 	cd /work/main/build-helper-r/tests && /usr/bin/ccache /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -MD -MT tests/CMakeFiles/common_tests.dir/common/seed_format_malformed_test.cpp.o -MF CMakeFiles/common_tests.dir/common/seed_format_malformed_test.cpp.o.d -o CMakeFiles/common_tests.dir/common/seed_format_malformed_test.cpp.o -c /work/main/tests/common/seed_format_malformed_test.cpp
 
 tests/CMakeFiles/common_tests.dir/common/seed_format_malformed_test.cpp.i: cmake_force
@@ -198,7 +240,7 @@ tests/CMakeFiles/common_tests.dir/common/seed_format_malformed_test.cpp.s: cmake
 tests/CMakeFiles/common_tests.dir/common/seed_format_roundtrip_test.cpp.o: tests/CMakeFiles/common_tests.dir/flags.make
 tests/CMakeFiles/common_tests.dir/common/seed_format_roundtrip_test.cpp.o: /work/main/tests/common/seed_format_roundtrip_test.cpp
 tests/CMakeFiles/common_tests.dir/common/seed_format_roundtrip_test.cpp.o: tests/CMakeFiles/common_tests.dir/compiler_depend.ts
-	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_10) "Building CXX object tests/CMakeFiles/common_tests.dir/common/seed_format_roundtrip_test.cpp.o"
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_13) "Building CXX object tests/CMakeFiles/common_tests.dir/common/seed_format_roundtrip_test.cpp.o"
 	cd /work/main/build-helper-r/tests && /usr/bin/ccache /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -MD -MT tests/CMakeFiles/common_tests.dir/common/seed_format_roundtrip_test.cpp.o -MF CMakeFiles/common_tests.dir/common/seed_format_roundtrip_test.cpp.o.d -o CMakeFiles/common_tests.dir/common/seed_format_roundtrip_test.cpp.o -c /work/main/tests/common/seed_format_roundtrip_test.cpp
 
 tests/CMakeFiles/common_tests.dir/common/seed_format_roundtrip_test.cpp.i: cmake_force
@@ -219,6 +261,9 @@ common_tests_OBJECTS = \
 "CMakeFiles/common_tests.dir/common/map_svg_test.cpp.o" \
 "CMakeFiles/common_tests.dir/common/map_window_test.cpp.o" \
 "CMakeFiles/common_tests.dir/common/ramp_stairs_test.cpp.o" \
+"CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.o" \
+"CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.o" \
+"CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.o" \
 "CMakeFiles/common_tests.dir/common/seed_format_malformed_test.cpp.o" \
 "CMakeFiles/common_tests.dir/common/seed_format_roundtrip_test.cpp.o"
 
@@ -233,6 +278,9 @@ bin/common_tests: tests/CMakeFiles/common_tests.dir/common/map_geojson_test.cpp.
 bin/common_tests: tests/CMakeFiles/common_tests.dir/common/map_svg_test.cpp.o
 bin/common_tests: tests/CMakeFiles/common_tests.dir/common/map_window_test.cpp.o
 bin/common_tests: tests/CMakeFiles/common_tests.dir/common/ramp_stairs_test.cpp.o
+bin/common_tests: tests/CMakeFiles/common_tests.dir/common/ray_caster_equivalence_test.cpp.o
+bin/common_tests: tests/CMakeFiles/common_tests.dir/common/ray_caster_rules_test.cpp.o
+bin/common_tests: tests/CMakeFiles/common_tests.dir/common/ray_caster_segment_test.cpp.o
 bin/common_tests: tests/CMakeFiles/common_tests.dir/common/seed_format_malformed_test.cpp.o
 bin/common_tests: tests/CMakeFiles/common_tests.dir/common/seed_format_roundtrip_test.cpp.o
 bin/common_tests: tests/CMakeFiles/common_tests.dir/build.make
@@ -240,7 +288,7 @@ bin/common_tests: common/libfleetmap_common.a
 bin/common_tests: /usr/lib/x86_64-linux-gnu/libgtest_main.a
 bin/common_tests: /usr/lib/x86_64-linux-gnu/libgtest.a
 bin/common_tests: tests/CMakeFiles/common_tests.dir/link.txt
-	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --bold --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_11) "Linking CXX executable ../bin/common_tests"
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --bold --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_14) "Linking CXX executable ../bin/common_tests"
 	cd /work/main/build-helper-r/tests && $(CMAKE_COMMAND) -E cmake_link_script CMakeFiles/common_tests.dir/link.txt --verbose=$(VERBOSE)
 	cd /work/main/build-helper-r/tests && /usr/bin/cmake -D TEST_TARGET=common_tests -D TEST_EXECUTABLE=/work/main/build-helper-r/bin/common_tests -D TEST_EXECUTOR= -D TEST_WORKING_DIR=/work/main/build-helper-r/tests -D TEST_EXTRA_ARGS= -D TEST_PROPERTIES= -D TEST_PREFIX= -D TEST_SUFFIX= -D TEST_FILTER= -D NO_PRETTY_TYPES=FALSE -D NO_PRETTY_VALUES=FALSE -D TEST_LIST=common_tests_TESTS -D CTEST_FILE=/work/main/build-helper-r/tests/common_tests[1]_tests.cmake -D TEST_DISCOVERY_TIMEOUT=60 -D TEST_XML_OUTPUT_DIR= -P /usr/share/cmake-3.25/Modules/GoogleTestAddTests.cmake
 

@@ -11,6 +11,8 @@ set(CMAKE_DEPENDS_DEPENDENCY_FILES
   "/work/main/tests/integration/accounts_test.cpp" "tests/CMakeFiles/integration_tests.dir/integration/accounts_test.cpp.o" "gcc" "tests/CMakeFiles/integration_tests.dir/integration/accounts_test.cpp.o.d"
   "/work/main/tests/integration/map_import_test.cpp" "tests/CMakeFiles/integration_tests.dir/integration/map_import_test.cpp.o" "gcc" "tests/CMakeFiles/integration_tests.dir/integration/map_import_test.cpp.o.d"
   "/work/main/tests/integration/map_window_test.cpp" "tests/CMakeFiles/integration_tests.dir/integration/map_window_test.cpp.o" "gcc" "tests/CMakeFiles/integration_tests.dir/integration/map_window_test.cpp.o.d"
+  "/work/main/tests/integration/protocol_robot_test.cpp" "tests/CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.o" "gcc" "tests/CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.o.d"
+  "/work/main/tests/integration/server_fixture.cpp" "tests/CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.o" "gcc" "tests/CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.o.d"
   "/work/main/tests/integration/test_db.cpp" "tests/CMakeFiles/integration_tests.dir/integration/test_db.cpp.o" "gcc" "tests/CMakeFiles/integration_tests.dir/integration/test_db.cpp.o.d"
   )
 

@@ -111,10 +111,24 @@ tests/CMakeFiles/integration_tests.dir/integration/map_window_test.cpp.s: cmake_
 	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Compiling CXX source to assembly CMakeFiles/integration_tests.dir/integration/map_window_test.cpp.s"
 	cd /work/main/build-helper-r/tests && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -S /work/main/tests/integration/map_window_test.cpp -o CMakeFiles/integration_tests.dir/integration/map_window_test.cpp.s
 
+tests/CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.o: tests/CMakeFiles/integration_tests.dir/flags.make
+tests/CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.o: /work/main/tests/integration/protocol_robot_test.cpp
+tests/CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.o: tests/CMakeFiles/integration_tests.dir/compiler_depend.ts
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_4) "Building CXX object tests/CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.o"
+	cd /work/main/build-helper-r/tests && /usr/bin/ccache /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -MD -MT tests/CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.o -MF CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.o.d -o CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.o -c /work/main/tests/integration/protocol_robot_test.cpp
+
+tests/CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.i: cmake_force
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Preprocessing CXX source to CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.i"
+	cd /work/main/build-helper-r/tests && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -E /work/main/tests/integration/protocol_robot_test.cpp > CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.i
+
+tests/CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.s: cmake_force
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Compiling CXX source to assembly CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.s"
+	cd /work/main/build-helper-r/tests && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -S /work/main/tests/integration/protocol_robot_test.cpp -o CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.s
+
 tests/CMakeFiles/integration_tests.dir/integration/test_db.cpp.o: tests/CMakeFiles/integration_tests.dir/flags.make
 tests/CMakeFiles/integration_tests.dir/integration/test_db.cpp.o: /work/main/tests/integration/test_db.cpp
 tests/CMakeFiles/integration_tests.dir/integration/test_db.cpp.o: tests/CMakeFiles/integration_tests.dir/compiler_depend.ts
-	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_4) "Building CXX object tests/CMakeFiles/integration_tests.dir/integration/test_db.cpp.o"
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_5) "Building CXX object tests/CMakeFiles/integration_tests.dir/integration/test_db.cpp.o"
 	cd /work/main/build-helper-r/tests && /usr/bin/ccache /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -MD -MT tests/CMakeFiles/integration_tests.dir/integration/test_db.cpp.o -MF CMakeFiles/integration_tests.dir/integration/test_db.cpp.o.d -o CMakeFiles/integration_tests.dir/integration/test_db.cpp.o -c /work/main/tests/integration/test_db.cpp
 
 tests/CMakeFiles/integration_tests.dir/integration/test_db.cpp.i: cmake_force
@@ -125,12 +139,28 @@ tests/CMakeFiles/integration_tests.dir/integration/test_db.cpp.s: cmake_force
 	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Compiling CXX source to assembly CMakeFiles/integration_tests.dir/integration/test_db.cpp.s"
 	cd /work/main/build-helper-r/tests && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -S /work/main/tests/integration/test_db.cpp -o CMakeFiles/integration_tests.dir/integration/test_db.cpp.s
 
+tests/CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.o: tests/CMakeFiles/integration_tests.dir/flags.make
+tests/CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.o: /work/main/tests/integration/server_fixture.cpp
+tests/CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.o: tests/CMakeFiles/integration_tests.dir/compiler_depend.ts
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_6) "Building CXX object tests/CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.o"
+	cd /work/main/build-helper-r/tests && /usr/bin/ccache /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -MD -MT tests/CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.o -MF CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.o.d -o CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.o -c /work/main/tests/integration/server_fixture.cpp
+
+tests/CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.i: cmake_force
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Preprocessing CXX source to CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.i"
+	cd /work/main/build-helper-r/tests && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -E /work/main/tests/integration/server_fixture.cpp > CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.i
+
+tests/CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.s: cmake_force
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green "Compiling CXX source to assembly CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.s"
+	cd /work/main/build-helper-r/tests && /usr/bin/c++ $(CXX_DEFINES) $(CXX_INCLUDES) $(CXX_FLAGS) -S /work/main/tests/integration/server_fixture.cpp -o CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.s
+
 # Object files for target integration_tests
 integration_tests_OBJECTS = \
 "CMakeFiles/integration_tests.dir/integration/accounts_test.cpp.o" \
 "CMakeFiles/integration_tests.dir/integration/map_import_test.cpp.o" \
 "CMakeFiles/integration_tests.dir/integration/map_window_test.cpp.o" \
-"CMakeFiles/integration_tests.dir/integration/test_db.cpp.o"
+"CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.o" \
+"CMakeFiles/integration_tests.dir/integration/test_db.cpp.o" \
+"CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.o"
 
 # External object files for target integration_tests
 integration_tests_EXTERNAL_OBJECTS =
@@ -138,7 +168,9 @@ integration_tests_EXTERNAL_OBJECTS =
 bin/integration_tests: tests/CMakeFiles/integration_tests.dir/integration/accounts_test.cpp.o
 bin/integration_tests: tests/CMakeFiles/integration_tests.dir/integration/map_import_test.cpp.o
 bin/integration_tests: tests/CMakeFiles/integration_tests.dir/integration/map_window_test.cpp.o
+bin/integration_tests: tests/CMakeFiles/integration_tests.dir/integration/protocol_robot_test.cpp.o
 bin/integration_tests: tests/CMakeFiles/integration_tests.dir/integration/test_db.cpp.o
+bin/integration_tests: tests/CMakeFiles/integration_tests.dir/integration/server_fixture.cpp.o
 bin/integration_tests: tests/CMakeFiles/integration_tests.dir/build.make
 bin/integration_tests: protocol/libfleetmap_protocol.a
 bin/integration_tests: /usr/lib/x86_64-linux-gnu/libgtest_main.a
@@ -148,7 +180,7 @@ bin/integration_tests: /usr/lib/x86_64-linux-gnu/libmariadb.so
 bin/integration_tests: /usr/lib/x86_64-linux-gnu/libz.so
 bin/integration_tests: /usr/lib/x86_64-linux-gnu/libgtest.a
 bin/integration_tests: tests/CMakeFiles/integration_tests.dir/link.txt
-	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --bold --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_5) "Linking CXX executable ../bin/integration_tests"
+	@$(CMAKE_COMMAND) -E cmake_echo_color --switch=$(COLOR) --green --bold --progress-dir=/work/main/build-helper-r/CMakeFiles --progress-num=$(CMAKE_PROGRESS_7) "Linking CXX executable ../bin/integration_tests"
 	cd /work/main/build-helper-r/tests && $(CMAKE_COMMAND) -E cmake_link_script CMakeFiles/integration_tests.dir/link.txt --verbose=$(VERBOSE)
 	cd /work/main/build-helper-r/tests && /usr/bin/cmake -D TEST_TARGET=integration_tests -D TEST_EXECUTABLE=/work/main/build-helper-r/bin/integration_tests -D TEST_EXECUTOR= -D TEST_WORKING_DIR=/work/main/build-helper-r/tests -D TEST_EXTRA_ARGS= -D "TEST_PROPERTIES=FIXTURES_REQUIRED;db;RUN_SERIAL;TRUE;ENVIRONMENT;FLEETMAP_CONFIG=/work/main/build-helper-r/testdb/fleetmap.conf;FLEETMAP_HOME=/work/main/build-helper-r/testdb;FLEETMAP_PORT=33307" -D TEST_PREFIX= -D TEST_SUFFIX= -D TEST_FILTER= -D NO_PRETTY_TYPES=FALSE -D NO_PRETTY_VALUES=FALSE -D TEST_LIST=integration_tests_TESTS -D CTEST_FILE=/work/main/build-helper-r/tests/integration_tests[1]_tests.cmake -D TEST_DISCOVERY_TIMEOUT=60 -D TEST_XML_OUTPUT_DIR= -P /usr/share/cmake-3.25/Modules/GoogleTestAddTests.cmake
 

@@ -1,0 +1,117 @@
+#include "tests/integration/server_fixture.h"
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <stdexcept>
+#include <thread>
+
+#include "tests/integration/test_db.h"
+
+namespace fleetmap::test {
+
+ServerProcess::ServerProcess(const std::string& flags, const std::string& log_name) : log_path_(temp_path(log_name)) {
+  const std::string cmd = "exec " + std::string(FLEETMAP_BIN_DIR) + "/fleetmap-server --log-level debug " + flags +
+                          " >>" + log_path_ + " 2>&1";
+  pid_ = fork();
+  if (pid_ == 0) {
+    execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  if (pid_ < 0) throw std::runtime_error("fork failed");
+}
+
+ServerProcess::~ServerProcess() {
+  if (pid_ > 0) terminate();
+}
+
+void ServerProcess::terminate() {
+  if (pid_ <= 0) return;
+  ::kill(pid_, SIGTERM);
+  int status = 0;
+  waitpid(pid_, &status, 0);
+  pid_ = -1;
+}
+
+void ServerProcess::kill9() {
+  if (pid_ <= 0) return;
+  ::kill(pid_, SIGKILL);
+  int status = 0;
+  waitpid(pid_, &status, 0);
+  pid_ = -1;
+}
+
+std::string ServerProcess::log() const { return read_file(log_path_); }
+
+std::string add_robot(const std::string& name, const std::string& map) {
+  const std::string password = "pw-" + name + "-0123456789";
+  const std::string pw_file = temp_path(name + ".pw");
+  write_file(pw_file, password + "\n");
+  run("fleetmap", "robot remove " + name);  // a robot from an earlier run
+  RunResult r = run("fleetmap", "robot add " + name + " --map " + map + " --password-file " + pw_file);
+  if (r.exit_code != 0) throw std::runtime_error("robot add " + name + ": " + r.err);
+  return password;
+}
+
+void ensure_example_map(const std::string& name) {
+  if (scalar("SELECT COUNT(*) FROM maps WHERE name = '" + name + "'") > 0) return;
+  RunResult r = run("fleetmap", "map import " + source_path("maps/example-campus.map") + " --name " + name);
+  if (r.exit_code != 0) throw std::runtime_error("map import: " + r.err);
+}
+
+SqlRobot::SqlRobot(const std::string& name, const std::string& password) {
+  DbSettings s = tcp_settings(Role::Inspector);  // host, port, database of the instance
+  c_ = std::make_unique<mysqlpp::Connection>(true);
+  c_->set_option(new mysqlpp::SetCharsetNameOption("utf8mb4"));
+  c_->connect(s.database.c_str(), s.host.c_str(), name.c_str(), password.c_str(), s.port);
+}
+
+unsigned long long SqlRobot::send(const std::string& op, const std::string& params_json,
+                                  const std::optional<std::string>& payload, std::optional<unsigned> robot_id) {
+  mysqlpp::Query q = c_->query();
+  q << "INSERT INTO rr (robot_id, op, params, payload) VALUES ("
+    << (robot_id ? std::to_string(*robot_id) : "NULL") << ", " << mysqlpp::quote << op << ", " << mysqlpp::quote
+    << params_json << ", ";
+  if (payload) q << mysqlpp::quote << *payload;
+  else q << "NULL";
+  q << ")";
+  q.execute();
+  mysqlpp::Query id = c_->query("SELECT LAST_INSERT_ID()");
+  return std::stoull(std::string(id.store()[0][0]));
+}
+
+std::vector<SqlAnswer> SqlRobot::peek() {
+  mysqlpp::Query q = c_->query("SELECT id, robot_id, request_id, op, params, payload FROM sa_mine ORDER BY id");
+  std::vector<SqlAnswer> out;
+  for (const mysqlpp::Row& r : q.store()) {
+    SqlAnswer a;
+    a.id = std::stoull(std::string(r[0]));
+    a.robot_id = static_cast<unsigned>(std::stoul(std::string(r[1])));
+    if (!r[2].is_null()) a.request_id = std::stoull(std::string(r[2]));
+    a.op = std::string(r[3]);
+    a.params = nlohmann::json::parse(std::string(r[4]));
+    if (!r[5].is_null()) a.payload = std::string(r[5].data(), r[5].length());
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
+std::vector<SqlAnswer> SqlRobot::receive(size_t n, std::chrono::milliseconds timeout) {
+  std::vector<SqlAnswer> got;
+  const auto until = std::chrono::steady_clock::now() + timeout;
+  while (got.size() < n && std::chrono::steady_clock::now() < until) {
+    for (SqlAnswer& a : peek()) {
+      if (got.size() >= n) break;
+      mysqlpp::Query d = c_->query();
+      d << "DELETE FROM sa_mine WHERE id = " << a.id;
+      d.execute();
+      got.push_back(std::move(a));
+    }
+    if (got.size() < n) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return got;
+}
+
+}  // namespace fleetmap::test

@@ -1,0 +1,67 @@
+#pragma once
+// For tests of the server: the real fleetmap-server as a child process, robot accounts
+// made with the real `fleetmap robot add`, and SqlRobot, a reference robot that speaks
+// the protocol with plain SQL statements only (no project code on its side).
+#include <sys/types.h>
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <mysql++/mysql++.h>
+#include <nlohmann/json.hpp>
+
+namespace fleetmap::test {
+
+class ServerProcess {
+ public:
+  // Starts build/bin/fleetmap-server with extra flags; its log goes to a scratch file.
+  explicit ServerProcess(const std::string& flags = "", const std::string& log_name = "server.log");
+  ~ServerProcess();  // SIGTERM, then waits
+  void terminate();  // SIGTERM and wait; returns when it exited
+  void kill9();      // SIGKILL and wait
+  bool running() const { return pid_ > 0; }
+  std::string log() const;
+  ServerProcess(const ServerProcess&) = delete;
+  ServerProcess& operator=(const ServerProcess&) = delete;
+
+ private:
+  pid_t pid_ = -1;
+  std::string log_path_;
+};
+
+// Creates (or re-creates) a robot account on map via the real CLI; returns its password.
+std::string add_robot(const std::string& name, const std::string& map);
+// Imports maps/example-campus.map as `name` if it is not there yet.
+void ensure_example_map(const std::string& name);
+
+struct SqlAnswer {
+  unsigned long long id = 0;
+  unsigned robot_id = 0;
+  std::optional<unsigned long long> request_id;
+  std::string op;
+  nlohmann::json params;
+  std::optional<std::string> payload;
+};
+
+class SqlRobot {
+ public:
+  SqlRobot(const std::string& name, const std::string& password);
+  mysqlpp::Connection& connection() { return *c_; }
+
+  // INSERT INTO rr; returns the request id (LAST_INSERT_ID()).
+  unsigned long long send(const std::string& op, const std::string& params_json = "{}",
+                          const std::optional<std::string>& payload = std::nullopt,
+                          std::optional<unsigned> robot_id = std::nullopt);
+  // Reads sa_mine in id order until n answers arrived (or the timeout), deleting each.
+  std::vector<SqlAnswer> receive(size_t n, std::chrono::milliseconds timeout = std::chrono::seconds(10));
+  // Everything in sa_mine now, without deleting.
+  std::vector<SqlAnswer> peek();
+
+ private:
+  std::unique_ptr<mysqlpp::Connection> c_;
+};
+
+}  // namespace fleetmap::test
