@@ -43,9 +43,20 @@ long long scalar(const std::string& sql) {
 std::string source_path(const std::string& relative) { return std::string(FLEETMAP_SOURCE_DIR) + "/" + relative; }
 std::string real_map(const std::string& file) { return std::string(FLEETMAP_REAL_MAPS) + "/" + file; }
 
+std::string instance_home() {
+  // The fixture's instance folder holds its fleetmap.conf (FLEETMAP_CONFIG).
+  const char* conf = std::getenv("FLEETMAP_CONFIG");
+  if (!conf) throw std::runtime_error("FLEETMAP_CONFIG is not set: run the integration tests through ctest");
+  return std::filesystem::path(conf).parent_path().string();
+}
+
+std::string db_script() {
+  return "FLEETMAP_HOME=" + instance_home() + " FLEETMAP_PORT=" + std::to_string(settings(Role::Inspector).port) +
+         " bash " + source_path("scripts/db.sh");
+}
+
 std::string temp_path(const std::string& name) {
-  const char* home = std::getenv("FLEETMAP_HOME");
-  const std::filesystem::path dir = std::filesystem::path(home ? home : "/tmp") / "scratch";
+  const std::filesystem::path dir = std::filesystem::path(instance_home()) / "scratch";
   std::filesystem::create_directories(dir);
   return (dir / name).string();
 }

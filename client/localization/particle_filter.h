@@ -1,0 +1,124 @@
+#pragma once
+// The particle filter of seed 000 section 4.1 (Fig. 4) for global localization and
+// tracking on the segment map: initialise, then per laser scan predict (odometry),
+// update (eq. 4-6 on synthetic rays) and resample.
+//
+//  * Global initialisation: NP particles uniform over free space (free_space.h: the
+//    border minus closed obstacles), headings from the compass prior (+-3 degrees).
+//  * predict: each particle moves by its own draw of the odometry model (motion_model.h).
+//  * update: each particle casts NL synthetic rays through the RayCaster (the fast
+//    GridRayCaster unless one is given) and its weight is multiplied by eq. (6)
+//    (sensor_model.h), optionally by the compass term; particles are split over
+//    `threads` threads in fixed chunks.
+//  * resampling when the effective sample size falls below resample_threshold * NP:
+//    low-variance (NP kept), or KLD sampling when adaptive (tracking; the count follows
+//    the spread of the cloud between kld.min_particles and kld.max_particles). Then
+//    roughening (Gordon, Salmond & Smith 1993): each resampled particle is jittered by
+//    N(0, K s N^(-1/3)) per dimension, s the cloud's standard deviation in it, so that
+//    copies of one particle do not stay identical while the robot stands still.
+//  * estimate: weighted mean (circular mean for theta) and spread, the standard
+//    deviations of position (sqrt(var x + var y)) and of heading (circular).
+//
+// Reproducible: every random draw comes from std::mt19937_64 generators seeded from
+// `seed` (one per thread chunk, one for the sequential steps); the same seed, options
+// and inputs give the same particles. The filter holds no clock.
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "client/localization/compass_prior.h"
+#include "client/localization/free_space.h"
+#include "client/localization/motion_model.h"
+#include "client/localization/pose.h"
+#include "client/localization/resampling.h"
+#include "client/localization/sensor_model.h"
+#include "common/map.h"
+#include "common/ray_caster.h"
+
+namespace fleetmap::localization {
+
+struct ParticleFilterOptions {
+  size_t particles = 6000;          // NP (seed 000 section 4.1)
+  int beams = 131;                  // NL
+  double fov = kPi;                 // the NL beams spread evenly over 180 degrees
+  RayCasterOptions laser{0.3, 15.0};  // hL and RMAX; RMAX is also the sensor model's
+  SensorModelOptions sensor;        // alpha 1, beta 0.1, sigma_m 0.5 m
+  MotionNoise motion;
+  double compass_half_width = deg2rad(3.0);
+  bool compass_weight = true;       // weigh by the compass at each update given one
+  double resample_threshold = 0.5;  // resample when N_eff < this * N (1: every update)
+  double roughening = 0.2;          // K; 0 disables
+  bool adaptive = false;            // KLD sampling instead of a fixed NP
+  KldOptions kld;
+  double converged_xy = 0.5;              // metres of spread under which
+  double converged_theta = deg2rad(5.0);  // and radians: PoseEstimate::converged
+  int threads = 2;
+  uint64_t seed = 1;
+};
+
+struct PoseEstimate {
+  Pose pose;                // weighted mean; theta the circular mean
+  double spread_xy = 0;     // metres: sqrt(weighted var x + var y)
+  double spread_theta = 0;  // radians: sqrt(-2 ln R), R the mean resultant length
+  double n_eff = 0;         // 1 / sum w^2 of the normalized weights
+  size_t particles = 0;
+  bool converged = false;   // both spreads under the options' thresholds
+};
+
+class ParticleFilter {
+ public:
+  // Casts on a GridRayCaster built from the map (through the RayCaster interface).
+  explicit ParticleFilter(const Map& map, ParticleFilterOptions options = {});
+  // Casts on the given caster (tests, another implementation); map gives free space.
+  ParticleFilter(const Map& map, std::shared_ptr<const RayCaster> caster, ParticleFilterOptions options);
+
+  // A new map, e.g. a window around the robot (SPEC 5.4): a new RayCaster and free
+  // space; the particles and their weights are kept.
+  void set_map(const Map& map);
+  void set_map(const Map& map, std::shared_ptr<const RayCaster> caster);
+
+  // Global localization: NP particles uniform over free space, headings within the
+  // compass's +-half width of the reading, or uniform in (-pi, pi] without one.
+  void init_global(std::optional<double> compass);
+  // Tracking from a known pose: NP particles from N(pose, diag(sd_xy, sd_xy, sd_theta)).
+  void init_pose(const Pose& pose, double sd_xy, double sd_theta);
+
+  // Prediction with the odometry measured since the last call.
+  void predict(const Odometry& odometry);
+  // Correction with a scan (ranges[j] along beam_angles()[j]) and an optional compass
+  // reading; resamples when the weights call for it. Throws std::invalid_argument when
+  // ranges.size() != NL.
+  void update(const std::vector<double>& ranges, std::optional<double> compass = std::nullopt);
+
+  PoseEstimate estimate() const;
+
+  const std::vector<Pose>& poses() const { return poses_; }
+  const std::vector<double>& weights() const { return weights_; }  // normalized
+  const std::vector<double>& beam_angles() const { return beams_; }
+  const ParticleFilterOptions& options() const { return options_; }
+  const RayCaster& ray_caster() const { return *caster_; }
+  size_t updates() const { return updates_; }
+  size_t resamplings() const { return resamplings_; }
+
+ private:
+  void normalize_weights();
+  void resample();
+  void roughen();
+
+  ParticleFilterOptions options_;
+  std::vector<double> beams_;
+  SensorModel sensor_;
+  MotionModel motion_;
+  CompassPrior compass_;
+  std::shared_ptr<const RayCaster> caster_;
+  std::unique_ptr<FreeSpace> free_space_;
+  std::vector<Pose> poses_;
+  std::vector<double> weights_;  // normalized, sum 1
+  std::mt19937_64 rng_;                 // sequential steps
+  std::vector<std::mt19937_64> chunk_rngs_;  // one per thread chunk
+  size_t updates_ = 0, resamplings_ = 0;
+};
+
+}  // namespace fleetmap::localization

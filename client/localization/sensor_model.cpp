@@ -1,0 +1,76 @@
+#include "client/localization/sensor_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "client/localization/pose.h"
+
+namespace fleetmap::localization {
+
+namespace {
+constexpr double kNegInf = -std::numeric_limits<double>::infinity();
+// exp(-q) stays a normal double, and its inverse finite, up to here.
+constexpr double kMaxExponent = 700;
+}  // namespace
+
+SensorModel::SensorModel(SensorModelOptions options) : options_(options) {
+  if (!(options.sigma_m > 0)) throw std::invalid_argument("SensorModelOptions.sigma_m: expected > 0 metres");
+  if (!(options.rmax > 0)) throw std::invalid_argument("SensorModelOptions.rmax: expected > 0 metres");
+  if (!(options.alpha >= 0) || !(options.beta >= 0) || options.alpha + options.beta == 0)
+    throw std::invalid_argument("SensorModelOptions.alpha, beta: expected >= 0 and not both 0");
+  normal_peak_ = options.alpha / (std::sqrt(2 * kPi) * options.sigma_m);
+  log_normal_peak_ = options.alpha > 0 ? std::log(normal_peak_) : kNegInf;
+  inv_two_var_ = 1 / (2 * options.sigma_m * options.sigma_m);
+  uniform_ = options.beta / options.rmax;
+}
+
+double SensorModel::likelihood(double delta) const {
+  // seed 000 eq. (5); the uniform term covers [-RMAX, 0]: measured shorter than expected.
+  const double u = (delta <= 0 && delta >= -options_.rmax) ? uniform_ : 0.0;
+  return normal_peak_ * std::exp(-delta * delta * inv_two_var_) + u;
+}
+
+double SensorModel::log_likelihood(double delta) const {
+  const double q = delta * delta * inv_two_var_;
+  const bool uniform = delta <= 0 && delta >= -options_.rmax && uniform_ > 0;
+  const double log_normal = log_normal_peak_ - q;
+  if (!uniform) return log_normal;
+  // log(e^a + e^b) without overflow or underflow.
+  const double log_u = std::log(uniform_);
+  const double hi = std::max(log_normal, log_u), lo = std::min(log_normal, log_u);
+  return hi + std::log1p(std::exp(lo - hi));
+}
+
+double SensorModel::log_weight(const double* measured, const double* synthetic, size_t n) const {
+  if (options_.combination == BeamCombination::Product) {
+    double s = 0;
+    for (size_t j = 0; j < n; ++j) s += log_likelihood(measured[j] - synthetic[j]);
+    return s;
+  }
+  // seed 000 eq. (6): 1 / sum_j 1/L_j. In doubles while every 1/L_j is finite (the usual
+  // case: with sigma_m 0.5 m and RMAX 15 m the exponent is at most 450), else in logs.
+  double inv_sum = 0;
+  for (size_t j = 0; j < n; ++j) {
+    const double d = measured[j] - synthetic[j];
+    const double q = d * d * inv_two_var_;
+    if (q > kMaxExponent) return log_weight_harmonic_slow(measured, synthetic, n);
+    const double u = (d <= 0 && d >= -options_.rmax) ? uniform_ : 0.0;
+    inv_sum += 1 / (normal_peak_ * std::exp(-q) + u);
+  }
+  if (n == 0) return 0;
+  return -std::log(inv_sum);
+}
+
+double SensorModel::log_weight_harmonic_slow(const double* measured, const double* synthetic, size_t n) const {
+  // -log sum_j exp(-log L_j), by the log-sum-exp trick.
+  double top = kNegInf;
+  for (size_t j = 0; j < n; ++j) top = std::max(top, -log_likelihood(measured[j] - synthetic[j]));
+  if (std::isinf(top)) return top > 0 ? kNegInf : 0.0;
+  double s = 0;
+  for (size_t j = 0; j < n; ++j) s += std::exp(-log_likelihood(measured[j] - synthetic[j]) - top);
+  return -(top + std::log(s));
+}
+
+}  // namespace fleetmap::localization

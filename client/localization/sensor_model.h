@@ -1,0 +1,65 @@
+#pragma once
+// The laser sensor model of seed 000 section 4.1, eq. (4)-(6).
+//
+//   (4)  delta_j = ls_j^L - ls_j^i       measured range minus the particle's synthetic one
+//   (5)  L(delta) = alpha N(0, sigma_m)(delta) + beta U(-RMAX, 0)(delta)
+//   (6)  w^i(t) = w^i(t-1) / sum_j 1 / L(delta_j)
+//
+// N(0, sigma_m) is the normal density, 1 / (sqrt(2 pi) sigma_m) exp(-delta^2 / 2 sigma_m^2).
+// The seed calls sigma_m a variance but gives it in metres (0.5 m); we read it as the
+// standard deviation. U(-RMAX, 0) is the uniform density 1 / RMAX on [-RMAX, 0] and 0
+// elsewhere: it applies only when the laser measured at most the synthetic range
+// (delta <= 0), the ray stopped short of the modelled wall by something the map does not
+// hold (people, cars, bikes). A ray that went further than the map allows (delta > 0)
+// is explained by the normal term alone. Beams the laser returned at RMAX (nothing hit)
+// are compared like any other: the synthetic ray of a good particle also ends at RMAX.
+//
+// Eq. (6) combines the beams by the inverse of the sum of inverses (a harmonic mean up to
+// the factor NL), which the worst beams dominate but which no single beam can drive far
+// below the others; BeamCombination::Product is the usual independent-beam product
+// (Thrun et al. 2005, eq. 6.2), kept for comparison (bench-localization --combination).
+// Both are computed as logarithms so that no weight underflows.
+#include <cstddef>
+
+namespace fleetmap::localization {
+
+enum class BeamCombination {
+  Harmonic,  // seed 000 eq. (6), the default
+  Product,   // prod_j L(delta_j)
+};
+
+struct SensorModelOptions {
+  double alpha = 1.0;    // seed 000 eq. (5): weight of the normal term
+  double beta = 0.1;     // seed 000 eq. (5): weight of the uniform term
+  double sigma_m = 0.5;  // metres, standard deviation of the normal term
+  double rmax = 15.0;    // metres, RMAX: the laser's range and the uniform's width
+  BeamCombination combination = BeamCombination::Harmonic;
+};
+
+class SensorModel {
+ public:
+  // Throws std::invalid_argument when sigma_m or rmax is not positive, or alpha or beta
+  // is negative, or both are zero.
+  explicit SensorModel(SensorModelOptions options = {});
+
+  // Eq. (5) for one beam, and its natural logarithm (exact also where L underflows).
+  double likelihood(double delta) const;
+  double log_likelihood(double delta) const;
+
+  // The logarithm of the factor of eq. (6) (or of the product) that multiplies the
+  // previous weight, for n beams: measured[j] against synthetic[j].
+  double log_weight(const double* measured, const double* synthetic, size_t n) const;
+
+  const SensorModelOptions& options() const { return options_; }
+
+ private:
+  double log_weight_harmonic_slow(const double* measured, const double* synthetic, size_t n) const;
+
+  SensorModelOptions options_;
+  double normal_peak_;      // alpha / (sqrt(2 pi) sigma_m)
+  double log_normal_peak_;
+  double inv_two_var_;      // 1 / (2 sigma_m^2)
+  double uniform_;          // beta / RMAX
+};
+
+}  // namespace fleetmap::localization

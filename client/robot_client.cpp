@@ -1,0 +1,168 @@
+#include "client/robot_client.h"
+
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/post.hpp>
+#include <boost/asio/steady_timer.hpp>
+#include <spdlog/spdlog.h>
+
+#include "protocol/connection.h"
+#include "protocol/map_codec.h"
+
+namespace fleetmap {
+
+struct RobotClient::AliveTimer {
+  boost::asio::io_context io;
+  boost::asio::steady_timer timer{io};
+  std::thread thread;
+  std::chrono::milliseconds period{1000};
+};
+
+namespace {
+
+bool connection_error(const mysqlpp::Exception& e) {
+  if (const auto* bq = dynamic_cast<const mysqlpp::BadQuery*>(&e)) return bq->errnum() >= 2000 && bq->errnum() < 3000;
+  return dynamic_cast<const mysqlpp::ConnectionFailed*>(&e) != nullptr;
+}
+
+}  // namespace
+
+RobotClient::RobotClient(DbSettings settings, std::chrono::seconds reconnect_for)
+    : settings_(std::move(settings)), reconnect_for_(reconnect_for) {
+  conn_ = connect(settings_);
+}
+
+RobotClient::~RobotClient() { stop_alive(); }
+
+template <typename F>
+auto RobotClient::with_connection(F&& f) -> decltype(f(std::declval<RobotChannel&>())) {
+  std::lock_guard lock(mutex_);
+  const auto give_up = Clock::now() + reconnect_for_;
+  double wait_s = 0.05;
+  for (;;) {
+    try {
+      if (!conn_) {
+        conn_ = connect(settings_);
+        ++reconnects_;
+        spdlog::info("robot client: reconnected as {}", describe(settings_));
+      }
+      RobotChannel ch(*conn_);
+      return f(ch);
+    } catch (const mysqlpp::Exception& e) {
+      if (!connection_error(e) || Clock::now() > give_up) throw;
+      spdlog::warn("robot client: connection lost ({}); retrying", e.what());
+      conn_.reset();
+    } catch (const DbError& e) {  // reconnect failed: the database is still down
+      if (Clock::now() > give_up) throw;
+      conn_.reset();
+    }
+    std::this_thread::sleep_for(std::chrono::duration<double>(wait_s));
+    wait_s = std::min(wait_s * 2, 2.0);
+  }
+}
+
+unsigned long long RobotClient::send(RequestOp op, const Json& params, const std::optional<std::string>& payload) {
+  return with_connection([&](RobotChannel& ch) { return ch.send(op, params, payload, robot_id_); });
+}
+
+void RobotClient::fetch() {
+  with_connection([&](RobotChannel& ch) {
+    for (ReceivedAnswer& a : ch.answers(last_answer_, 1000)) {
+      last_answer_ = a.id;
+      ch.remove(a.id);
+      const std::optional<AnswerOp> op = parse_answer_op(a.op);
+      // Pushed operations are acknowledged at once: the server records that we took them.
+      if (!a.request_id && (op == AnswerOp::SetPosEnd || op == AnswerOp::Abort))
+        ch.send(RequestOp::OpAck, Json{{"answer_id", a.id}}, std::nullopt, robot_id_);
+      inbox_.push_back(std::move(a));
+    }
+    return 0;
+  });
+}
+
+std::vector<ReceivedAnswer> RobotClient::receive() {
+  std::lock_guard lock(mutex_);
+  fetch();
+  std::vector<ReceivedAnswer> out(std::make_move_iterator(inbox_.begin()), std::make_move_iterator(inbox_.end()));
+  inbox_.clear();
+  return out;
+}
+
+std::vector<ReceivedAnswer> RobotClient::await(unsigned long long request_id, size_t n,
+                                               std::chrono::milliseconds timeout) {
+  const auto until = Clock::now() + timeout;
+  std::vector<ReceivedAnswer> got;
+  for (;;) {
+    {
+      std::lock_guard lock(mutex_);
+      fetch();
+      for (auto it = inbox_.begin(); it != inbox_.end() && got.size() < n;) {
+        if (it->request_id == request_id) {
+          got.push_back(std::move(*it));
+          it = inbox_.erase(it);
+        } else {
+          ++it;
+        }
+      }
+    }
+    if (got.size() >= n) return got;
+    if (Clock::now() > until)
+      throw RobotClientError("no answer to request " + std::to_string(request_id) + " within " +
+                             std::to_string(timeout.count()) + " ms (is fleetmap-server running?)");
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
+RobotSession RobotClient::ready(long long magic, MapEncoding encoding, std::chrono::milliseconds timeout) {
+  robot_id_.reset();  // the first Ready carries no robot id
+  const auto id = send(RequestOp::Ready, Json{{"magic", magic}, {"encoding", std::string(name(encoding))}});
+  std::vector<ReceivedAnswer> a = await(id, 1, timeout);
+  if (a[0].op == "Error")
+    throw RobotClientError("Ready refused: " + a[0].params.value("code", "?") + ": " + a[0].params.value("message", ""));
+  if (a[0].op != "Start") throw RobotClientError("expected Start after Ready, got " + a[0].op);
+  const StartParams start = decode_start(a[0].params);
+  if (start.magic != magic) throw RobotClientError("Start carries another magic");
+  std::vector<ReceivedAnswer> m = await(id, 1, timeout);
+  if (m[0].op != "SetMap")
+    throw RobotClientError("expected SetMap after Start, got " + m[0].op + " " + m[0].params.dump());
+  RobotSession s;
+  s.robot_id = start.robot_id;
+  s.alive_period_s = start.alive_period_s;
+  s.map_params = decode_set_map(m[0].params);
+  s.map = decode_map(m[0].payload.value_or(""), s.map_params.encoding, MapKind::Window);
+  robot_id_ = start.robot_id;
+  return s;
+}
+
+void RobotClient::start_alive(std::chrono::milliseconds period) {
+  stop_alive();
+  alive_ = std::make_unique<AliveTimer>();
+  alive_->period = period;
+  auto* t = alive_.get();
+  struct Tick {
+    RobotClient* self;
+    AliveTimer* t;
+    void operator()(const boost::system::error_code& ec) const {
+      if (ec) return;  // cancelled
+      try {
+        self->send(RequestOp::Alive);
+      } catch (const std::exception& e) {
+        spdlog::warn("robot client: Alive not sent: {}", e.what());
+      }
+      t->timer.expires_at(t->timer.expiry() + t->period);
+      t->timer.async_wait(*this);
+    }
+  };
+  t->timer.expires_after(period);
+  t->timer.async_wait(Tick{this, t});
+  t->thread = std::thread([t] { t->io.run(); });
+}
+
+void RobotClient::stop_alive() {
+  if (!alive_) return;
+  boost::asio::post(alive_->io, [t = alive_.get()] { t->timer.cancel(); });
+  alive_->io.stop();
+  if (alive_->thread.joinable()) alive_->thread.join();
+  alive_.reset();
+}
+
+}  // namespace fleetmap

@@ -1,0 +1,88 @@
+#pragma once
+// RobotClient: what a real robot links to speak RR/SA (SPEC 5) with its own account.
+// Ready/Start handshake, every robot op, answers read from sa_mine in id order and
+// deleted, pushed operations (SetPosEnd, Abort) acknowledged with OpAck, Alive on a
+// Boost.Asio timer, and reconnection when the database goes away.
+//
+// Delivery: a request whose INSERT fails with the connection is sent again after
+// reconnecting, so nothing the robot sent is lost; if the INSERT had in fact committed
+// before the connection broke, the server sees it twice (at-least-once). Answers are
+// handed over exactly once (ids above the last one handed over).
+#include <atomic>
+#include <chrono>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include <mysql++/mysql++.h>
+
+#include "common/map.h"
+#include "protocol/db_settings.h"
+#include "protocol/params.h"
+#include "protocol/robot_channel.h"
+
+namespace fleetmap {
+
+class RobotClientError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct RobotSession {
+  unsigned robot_id = 0;
+  double alive_period_s = 1;
+  Map map;                  // the SetMap that followed Start
+  SetMapParams map_params;
+};
+
+class RobotClient {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  explicit RobotClient(DbSettings settings, std::chrono::seconds reconnect_for = std::chrono::seconds(60));
+  ~RobotClient();
+
+  // Ready, then Start (same magic) and SetMap. Throws RobotClientError on Error or time-out.
+  RobotSession ready(long long magic, MapEncoding encoding = MapEncoding::Seed,
+                     std::chrono::milliseconds timeout = std::chrono::seconds(10));
+
+  unsigned long long send(RequestOp op, const Json& params = Json::object(),
+                          const std::optional<std::string>& payload = std::nullopt);
+
+  // Answers that arrived since the last call, in id order; pushed SetPosEnd and Abort
+  // are acknowledged (OpAck) before they are returned.
+  std::vector<ReceivedAnswer> receive();
+
+  // The n answers of one request (others stay queued for receive()). Throws on time-out.
+  std::vector<ReceivedAnswer> await(unsigned long long request_id, size_t n,
+                                    std::chrono::milliseconds timeout = std::chrono::seconds(10));
+
+  // Sends Alive every period on a timer thread until stop_alive() or destruction.
+  void start_alive(std::chrono::milliseconds period);
+  void stop_alive();
+
+  std::optional<unsigned> robot_id() const { return robot_id_; }
+  size_t reconnects() const { return reconnects_; }
+
+ private:
+  template <typename F>
+  auto with_connection(F&& f) -> decltype(f(std::declval<RobotChannel&>()));
+  void fetch();  // sa_mine -> inbox_
+
+  DbSettings settings_;
+  std::chrono::seconds reconnect_for_;
+  std::recursive_mutex mutex_;  // one connection, used by the caller and the Alive timer
+  std::unique_ptr<mysqlpp::Connection> conn_;
+  std::deque<ReceivedAnswer> inbox_;
+  unsigned long long last_answer_ = 0;
+  std::optional<unsigned> robot_id_;
+  std::atomic<size_t> reconnects_{0};
+
+  struct AliveTimer;
+  std::unique_ptr<AliveTimer> alive_;
+};
+
+}  // namespace fleetmap

@@ -1,0 +1,42 @@
+#include "protocol/robot_channel.h"
+
+#include "protocol/sql_util.h"
+
+namespace fleetmap {
+
+unsigned long long RobotChannel::send(RequestOp op, const Json& params, const std::optional<std::string>& payload,
+                                      std::optional<unsigned> robot_id) {
+  mysqlpp::Query q = c_.query();
+  q << "INSERT INTO rr (robot_id, op, params, payload) VALUES (" << (robot_id ? std::to_string(*robot_id) : "NULL")
+    << ", " << mysqlpp::quote << std::string(name(op)) << ", " << mysqlpp::quote << params.dump() << ", ";
+  if (payload) q << mysqlpp::quote << *payload;
+  else q << "NULL";
+  q << ")";
+  return q.execute().insert_id();
+}
+
+std::vector<ReceivedAnswer> RobotChannel::answers(unsigned long long after, size_t limit) {
+  mysqlpp::Query q = c_.query();
+  q << "SELECT id, robot_id, request_id, op, params, payload FROM sa_mine WHERE id > " << after << " ORDER BY id LIMIT "
+    << limit;
+  std::vector<ReceivedAnswer> out;
+  for (const mysqlpp::Row& r : q.store()) {
+    ReceivedAnswer a;
+    a.id = sql::to_uint(r[0]);
+    a.robot_id = static_cast<unsigned>(sql::to_uint(r[1]));
+    if (!r[2].is_null()) a.request_id = sql::to_uint(r[2]);
+    a.op = sql::to_string(r[3]);
+    a.params = Json::parse(sql::to_string(r[4]), nullptr, false);
+    if (!r[5].is_null()) a.payload = sql::to_string(r[5]);
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
+void RobotChannel::remove(unsigned long long answer_id) {
+  mysqlpp::Query q = c_.query();
+  q << "DELETE FROM sa_mine WHERE id = " << answer_id;
+  q.execute();
+}
+
+}  // namespace fleetmap

@@ -1,0 +1,133 @@
+// The robot client library against the real server: handshake, zoom-map refresh by
+// distance and by time-out, pushed operations acknowledged, a database restart survived.
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "client/robot_client.h"
+#include "client/zoom_map_client.h"
+#include "common/map_window.h"
+#include "common/seed_format.h"
+#include "tests/integration/server_fixture.h"
+#include "tests/integration/test_db.h"
+
+namespace fleetmap::test {
+namespace {
+
+class RobotClientTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ensure_example_map("client_map");
+    const std::string pw = add_robot("client_r1", "client_map");
+    settings_ = tcp_settings(Role::Inspector);
+    settings_.user = "client_r1";
+    settings_.password = pw;
+    server_ = std::make_unique<ServerProcess>("", "client_server.log");
+  }
+  void TearDown() override {
+    server_.reset();
+    if (HasFailure()) std::cerr << read_file(temp_path("client_server.log")).substr(0, 20000);
+  }
+  // receive() until an answer satisfies pred or the timeout passes.
+  std::optional<ReceivedAnswer> wait_for(RobotClient& c, const std::function<bool(const ReceivedAnswer&)>& pred,
+                                         std::vector<ReceivedAnswer>* seen = nullptr) {
+    for (int i = 0; i < 500; ++i) {
+      for (ReceivedAnswer& a : c.receive()) {
+        if (seen) seen->push_back(a);
+        if (pred(a)) return a;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return std::nullopt;
+  }
+  DbSettings settings_;
+  std::unique_ptr<ServerProcess> server_;
+};
+
+TEST_F(RobotClientTest, HandshakeGivesRobotIdAndMap) {
+  RobotClient client(settings_);
+  const RobotSession s = client.ready(99);
+  EXPECT_EQ(s.robot_id, static_cast<unsigned>(scalar("SELECT id FROM robots WHERE db_user = 'client_r1'")));
+  EXPECT_EQ(s.map, read_seed_file(source_path("maps/example-campus.map")));
+  EXPECT_EQ(client.robot_id(), s.robot_id);
+  // Requests now carry the robot id, and the server accepts them.
+  const auto id = client.send(RequestOp::GetPosEnd);
+  auto a = client.await(id, 1);
+  EXPECT_EQ(a[0].params["code"], "no_goal");
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM rr WHERE db_user = 'client_r1'"), 0);
+}
+
+TEST_F(RobotClientTest, ZoomMapRefreshesByDistanceAndByTimeout) {
+  RobotClient client(settings_);
+  client.ready(1);
+  ZoomMapClient zoom(client, ZoomMapOptions{20, 5, 100});
+  const Map whole = read_seed_file(source_path("maps/example-campus.map"));
+  auto settle = [&](double now) {
+    auto got = wait_for(client, [&](const ReceivedAnswer& a) { return zoom.on_answer(a, now) || !zoom.pending(); });
+    return got.has_value();
+  };
+  EXPECT_EQ(zoom.update({20, 30}, 0), ZoomMap::Reason::NoWindow);
+  ASSERT_TRUE(settle(0));
+  ASSERT_TRUE(zoom.window());
+  EXPECT_EQ(*zoom.window(), clip_map(whole, window_rect(whole.border, {20, 30}, 20, 20)));
+  EXPECT_EQ(zoom.update({23, 30}, 10), ZoomMap::Reason::None);  // 3 m < 5 m, 10 s < 100 s
+  EXPECT_EQ(zoom.update({26, 30}, 20), ZoomMap::Reason::Distance);
+  ASSERT_TRUE(settle(20));
+  EXPECT_EQ(*zoom.window(), clip_map(whole, window_rect(whole.border, {26, 30}, 20, 20)));
+  EXPECT_EQ(zoom.update({26, 31}, 119), ZoomMap::Reason::None);
+  EXPECT_EQ(zoom.update({26, 31}, 121), ZoomMap::Reason::Timeout);
+  ASSERT_TRUE(settle(121));
+  EXPECT_EQ(zoom.window()->border.rect(), (Rect{16, 21, 36, 40}));
+}
+
+TEST_F(RobotClientTest, PushedGoalAndAbortAreAcknowledged) {
+  RobotClient client(settings_);
+  client.ready(5);
+  ASSERT_EQ(run("fleetmap", "goal client_r1 12 8").exit_code, 0);
+  auto goal = wait_for(client, [](const ReceivedAnswer& a) { return a.op == "SetPosEnd"; });
+  ASSERT_TRUE(goal);
+  EXPECT_EQ(goal->params["x"], 12.0);
+  const std::string task = "(SELECT MAX(t.id) FROM tasks t JOIN robots r ON r.id = t.robot_id WHERE r.db_user = 'client_r1')";
+  for (int i = 0; i < 300 && scalar("SELECT state = 'acknowledged' FROM tasks WHERE id = " + task) == 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_EQ(scalar("SELECT state = 'acknowledged' FROM tasks WHERE id = " + task), 1);
+  ASSERT_EQ(run("fleetmap", "abort client_r1 --reason stop").exit_code, 0);
+  auto abort = wait_for(client, [](const ReceivedAnswer& a) { return a.op == "Abort"; });
+  ASSERT_TRUE(abort);
+  for (int i = 0; i < 300 && scalar("SELECT state = 'aborted' FROM tasks WHERE id = " + task) == 0; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  EXPECT_EQ(scalar("SELECT state = 'aborted' FROM tasks WHERE id = " + task), 1);
+}
+
+TEST_F(RobotClientTest, AliveTimerKeepsTheRobotFromBeingLost) {
+  server_.reset();
+  server_ = std::make_unique<ServerProcess>("--alive-period 0.2 --lost-after 3", "client_server.log");
+  RobotClient client(settings_);
+  const RobotSession s = client.ready(3);
+  client.start_alive(std::chrono::milliseconds(static_cast<int>(s.alive_period_s * 1000)));
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  EXPECT_EQ(scalar("SELECT state = 'ready' FROM robots WHERE db_user = 'client_r1'"), 1);
+  client.stop_alive();
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  EXPECT_EQ(scalar("SELECT state = 'lost' FROM robots WHERE db_user = 'client_r1'"), 1);
+}
+
+TEST_F(RobotClientTest, SurvivesADatabaseRestart) {
+  RobotClient client(settings_);
+  client.ready(8);
+  const std::string db = db_script();
+  ASSERT_EQ(std::system((db + " stop >/dev/null").c_str()), 0);
+  std::thread restart([&] {
+    std::this_thread::sleep_for(std::chrono::seconds(1));
+    std::system((db + " start >/dev/null").c_str());
+  });
+  // Sent while the database is down: the client retries until it is back.
+  const auto id = client.send(RequestOp::SendGPS, Json{{"lat", 10.5}, {"lon", 20.25}});
+  restart.join();
+  auto a = client.await(id, 1, std::chrono::seconds(30));
+  EXPECT_EQ(a[0].op, "OpAck");
+  EXPECT_GE(client.reconnects(), 1u);
+}
+
+}  // namespace
+}  // namespace fleetmap::test
