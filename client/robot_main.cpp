@@ -1,12 +1,97 @@
-// fleetmap-robot: the simulated robot. A placeholder until the robot issue: it only
-// documents its options.
+// fleetmap-robot: a simulated robot that speaks RR/SA with its own account (SPEC 6).
+// Parses options and runs client/sim/SimRobot.
+#include <csignal>
+#include <unistd.h>
+
+#include <fstream>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
+
+#include "client/robot_client.h"
+#include "client/sim/sim_robot.h"
+#include "common/amrl_import.h"
+#include "common/seed_format.h"
+#include "protocol/connection.h"
+
+namespace {
+std::atomic<bool> g_stop{false};
+extern "C" void on_signal(int) { g_stop = true; }
+}  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"fleetmap-robot: simulated robot for the fleetmap map service (not built yet: see the robot issue)"};
-  CLI11_PARSE(app, argc, argv);
-  std::cerr << "fleetmap-robot: not implemented yet\n";
-  return 1;
+  using namespace fleetmap;
+  CLI::App app{"fleetmap-robot: a simulated robot (differential drive, noisy odometry, 2D laser, compass) that "
+               "registers with the fleetmap server, localizes on the maps it receives, reports its pose at 3 Hz "
+               "and drives to the goals operators give it."};
+  std::optional<std::string> config, host, user, password_file, world;
+  std::optional<unsigned> port;
+  std::vector<double> start;
+  double duration = 1e9;
+  SimRobotOptions o;
+  long long magic = 0;
+  std::string log_level = "info";
+  app.add_option("--config", config, "config file (the [robot] section: user, password or password_file)");
+  app.add_option("--host", host, "database host");
+  app.add_option("--port", port, "database TCP port");
+  app.add_option("--user", user, "the robot's account");
+  app.add_option("--password-file", password_file, "file holding the account's password")->check(CLI::ExistingFile);
+  app.add_option("--world", world, "ground-truth map file (seed or AMRL); default: the map the server sends on Ready");
+  app.add_option("--start", start, "true start pose X Y THETA (m, m, rad)")->expected(3)->required();
+  app.add_option("--duration", duration, "stop after this many seconds");
+  app.add_option("--laser-height", o.laser_height, "laser mounting height hL (m)")->capture_default_str();
+  app.add_option("--beams", o.laser.beams, "laser beams NL")->capture_default_str();
+  app.add_option("--laser-sigma", o.laser.sigma, "laser noise sigma_L (m)")->capture_default_str();
+  app.add_option("--people", o.laser.people, "unmodelled obstacles (people) per scan")->capture_default_str();
+  app.add_option("--particles", o.global_particles, "particles for global localization (NP)")->capture_default_str();
+  app.add_option("--tracking-particles", o.tracking_particles, "max particles while tracking (KLD)")->capture_default_str();
+  app.add_option("--speed", o.pursuit.max_speed, "max speed (m/s)")->capture_default_str();
+  app.add_flag("--zoom", o.zoom, "keep a map window around the robot (GetMap) instead of the whole map");
+  app.add_option("--zoom-window", o.zoom_options.window_m, "zoom window side (m)")->capture_default_str();
+  app.add_option("--seed", o.seed, "random seed")->capture_default_str();
+  app.add_option("--magic", magic, "magic of the Ready (default: the process id)");
+  app.add_option("--log-level", log_level, "trace, debug, info, warn, error")->capture_default_str();
+  app.footer("Exit codes: 0 ok, 1 failure (database, server), 2 bad input, 5 localization failed, 64 usage.");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 64;
+  }
+  spdlog::set_level(spdlog::level::from_str(log_level));
+  spdlog::set_pattern("%H:%M:%S.%e %^%-5l%$ [robot] %v");
+  std::signal(SIGTERM, on_signal);
+  std::signal(SIGINT, on_signal);
+  try {
+    DbSettings s = load_settings(Role::Robot, config);
+    if (host) { s.host = *host; s.socket.clear(); }
+    if (port) s.port = *port;
+    if (user) s.user = *user;
+    if (password_file) {
+      std::ifstream in(*password_file);
+      std::getline(in, s.password);
+    }
+    s.socket.clear();  // robots connect over the network, as real ones do
+    RobotClient client(s);
+    const RobotSession session = client.ready(magic ? magic : getpid());
+    spdlog::info("registered as robot {} ({}); map of {} segments", session.robot_id, s.user, session.map.segment_count());
+    client.start_alive(std::chrono::milliseconds(static_cast<int>(session.alive_period_s * 1000)));
+    Map truth = session.map;
+    if (world) {
+      const bool amrl = world->size() > 14 && world->substr(world->size() - 14) == ".vectormap.txt";
+      truth = amrl ? read_amrl_file(*world, AmrlOptions{}) : read_seed_file(*world);
+    }
+    SimRobot robot(client, truth, {start[0], start[1], start[2]}, session.map, o);
+    if (!robot.localize()) return 5;
+    robot.run(g_stop, duration);
+    spdlog::info("stopped: {} goal(s) reached", robot.goals_reached());
+    return 0;
+  } catch (const MapFormatError& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "fleetmap-robot: " << e.what() << "\n";
+    return 1;
+  }
 }

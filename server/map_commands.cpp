@@ -191,6 +191,33 @@ void add_map_commands(CLI::App& app, CliContext& ctx, int* exit_code) {
     });
   }
 
+  // map georef
+  {
+    auto name = std::make_shared<std::string>();
+    auto lat = std::make_shared<double>(), lon = std::make_shared<double>();
+    auto heading = std::make_shared<double>(0);
+    auto clear = std::make_shared<bool>(false);
+    auto* cmd = map->add_subcommand("georef", "georeference a map: SendGPS fixes then get map coordinates");
+    cmd->add_option("NAME", *name, "map name")->required();
+    cmd->add_option("LAT", *lat, "latitude of the map origin (degrees, WGS84)")->check(CLI::Range(-90.0, 90.0));
+    cmd->add_option("LON", *lon, "longitude of the map origin (degrees)")->check(CLI::Range(-180.0, 180.0));
+    cmd->add_option("--heading", *heading, "direction of the map x axis, radians counter-clockwise from east")
+        ->capture_default_str();
+    cmd->add_flag("--clear", *clear, "remove the georeference");
+    cmd->callback([=, &ctx] {
+      MapStore store(ctx.connection());
+      if (*clear) {
+        store.set_georef(*name, std::nullopt, std::nullopt, 0);
+      } else {
+        if (cmd->count("LAT") == 0 || cmd->count("LON") == 0) throw std::invalid_argument("expected LAT and LON, or --clear");
+        if (!std::isfinite(*heading)) throw std::invalid_argument("expected a finite --heading");
+        store.set_georef(*name, *lat, *lon, *heading);
+      }
+      std::printf("map '%s' %s\n", name->c_str(), *clear ? "is no longer georeferenced" : "georeferenced");
+      *exit_code = exit_code::kOk;
+    });
+  }
+
   // window
   {
     auto name = std::make_shared<std::string>();

@@ -4,40 +4,34 @@
 // filter's motion model sees only the odometry).
 #include <random>
 
-#include "common/geometry.h"
+#include "client/localization/pose.h"
 
 namespace fleetmap {
 
-struct Pose2 {
-  double x = 0, y = 0, theta = 0;
-};
-
-struct OdometryIncrement {
-  double forward = 0, lateral = 0, rotation = 0;  // in the robot frame at the start of the step
-};
+using localization::Odometry;
+using localization::Pose;
 
 struct OdometryNoise {
-  double forward_per_m = 0.02;   // standard deviation of distance error per metre driven
+  double forward_per_m = 0.02;     // standard deviation of distance error per metre driven
   double rotation_per_rad = 0.02;  // of rotation error per radian turned
   double rotation_per_m = 0.005;   // of rotation error per metre driven
 };
 
 class DifferentialDrive {
  public:
-  DifferentialDrive(Pose2 start, OdometryNoise noise, unsigned seed) : pose_(start), noise_(noise), rng_(seed) {}
+  DifferentialDrive(Pose start, OdometryNoise noise, unsigned seed) : pose_(start), noise_(noise), rng_(seed) {}
 
   // Moves the true pose by v (m/s), w (rad/s) for dt seconds; returns what the odometry
-  // measured of that motion.
-  OdometryIncrement step(double v, double w, double dt);
+  // measured of that motion, in the robot frame at the start of the step.
+  Odometry step(double v, double w, double dt);
 
-  const Pose2& pose() const { return pose_; }
+  const Pose& pose() const { return pose_; }
+  void stop_at(const Pose& p) { pose_ = p; }
 
  private:
-  Pose2 pose_;
+  Pose pose_;
   OdometryNoise noise_;
   std::mt19937_64 rng_;
 };
-
-double normalize_angle(double a);
 
 }  // namespace fleetmap

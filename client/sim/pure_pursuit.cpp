@@ -10,7 +10,7 @@ void PurePursuit::set_path(std::vector<Point> waypoints) {
   next_ = 0;
 }
 
-Command PurePursuit::command(const Pose2& pose) {
+Command PurePursuit::command(const Pose& pose) {
   if (path_.empty()) return {0, 0, true};
   const Point p{pose.x, pose.y};
   const Point goal = path_.back();
@@ -22,7 +22,7 @@ Command PurePursuit::command(const Pose2& pose) {
   while (next_ + 1 < path_.size() && distance(p, path_[next_]) < o_.lookahead_m) ++next_;
   const Point target = path_[next_];
   const double heading = std::atan2(target.y - p.y, target.x - p.x);
-  const double alpha = normalize_angle(heading - pose.theta);
+  const double alpha = localization::normalize_angle(heading - pose.theta);
   const double ld = std::max(distance(p, target), 1e-6);
   double v = std::min(o_.max_speed, distance(p, goal));       // slow down at the end
   if (std::abs(alpha) > M_PI / 2) v = 0;                      // turn on the spot first

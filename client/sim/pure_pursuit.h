@@ -25,7 +25,7 @@ class PurePursuit {
   void set_path(std::vector<Point> waypoints);
   void clear() { path_.clear(); }
   bool has_path() const { return !path_.empty(); }
-  Command command(const Pose2& pose);
+  Command command(const Pose& pose);
 
  private:
   PurePursuitOptions o_;

@@ -190,6 +190,20 @@ TEST_F(ReferenceRobot, GpsImageAndObjectAreStoredAndAcknowledged) {
             doors + 1);
 }
 
+TEST_F(ReferenceRobot, GpsFixesGetMapCoordinatesOnAGeoreferencedMap) {
+  ready();
+  // Origin at (41.389 N, 2.113 E), map x axis pointing north (heading pi/2).
+  ASSERT_EQ(run("fleetmap", "map georef proto_map 41.389 2.113 --heading 1.5707963267948966").exit_code, 0);
+  auto a = ask("SendGPS", R"({"lat": 41.390, "lon": 2.113})", 1);  // 0.001 deg north: 111.195 m
+  ASSERT_EQ(a[0].op, "OpAck");
+  const std::string last = " FROM gps_fixes WHERE robot_id = " + std::to_string(robot_id_) + " ORDER BY id DESC LIMIT 1";
+  EXPECT_EQ(scalar("SELECT ROUND(x * 1000)" + last), 111195);  // north is +x
+  EXPECT_EQ(scalar("SELECT ROUND(y * 1000)" + last), 0);
+  ASSERT_EQ(run("fleetmap", "map georef proto_map --clear").exit_code, 0);
+  ask("SendGPS", R"({"lat": 41.390, "lon": 2.113})", 1);
+  EXPECT_EQ(scalar("SELECT x IS NULL" + last), 1);
+}
+
 TEST(ReferenceRobotLimits, OversizedImageIsRefused) {
   ensure_example_map("proto_map");
   const std::string pw = add_robot("proto_big", "proto_map");

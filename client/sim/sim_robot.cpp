@@ -1,0 +1,149 @@
+#include "client/sim/sim_robot.h"
+
+#include <thread>
+
+#include <spdlog/spdlog.h>
+
+#include "common/sweep_ray_caster.h"
+#include "protocol/map_codec.h"
+
+namespace fleetmap {
+
+namespace loc = localization;
+
+SimRobot::SimRobot(RobotClient& client, const Map& world, Pose start, const Map& first_map, SimRobotOptions o)
+    : client_(client),
+      o_(o),
+      world_(make_fast_ray_caster(world, RayCasterOptions{o.laser_height, 15.0})),
+      drive_(start, o.odometry, o.seed),
+      laser_(world_, o.laser, o.seed + 1),
+      pursuit_(o.pursuit),
+      rng_(o.seed + 2),
+      map_(first_map) {
+  loc::ParticleFilterOptions fo;
+  fo.particles = o.global_particles;
+  fo.beams = o.laser.beams;
+  fo.fov = o.laser.fov;
+  fo.laser = {o.laser_height, 15.0};
+  fo.seed = o.seed + 3;
+  filter_ = std::make_unique<loc::ParticleFilter>(first_map, fo);
+  if (o.zoom) zoom_ = std::make_unique<ZoomMapClient>(client_, o.zoom_options);
+}
+
+double SimRobot::compass() {
+  std::normal_distribution<double> n(0, loc::deg2rad(o_.compass_sigma_deg));
+  return loc::normalize_angle(drive_.pose().theta + n(rng_));
+}
+
+std::optional<int> SimRobot::localize(int max_updates) {
+  filter_->init_global(compass());
+  for (int i = 1; i <= max_updates; ++i) {
+    // Turn a little in place between scans, as a robot looking around would.
+    const Odometry odo = drive_.step(0, 0.5, 0.2);
+    filter_->predict(odo);
+    filter_->update(laser_.scan(drive_.pose()), compass());
+    const loc::PoseEstimate e = filter_->estimate();
+    if (e.converged) {
+      spdlog::info("localized after {} updates at ({:.2f}, {:.2f}, {:.1f} deg); truth ({:.2f}, {:.2f}, {:.1f} deg)", i,
+                   e.pose.x, e.pose.y, loc::rad2deg(e.pose.theta), drive_.pose().x, drive_.pose().y,
+                   loc::rad2deg(drive_.pose().theta));
+      // Tracking: fewer particles, their count adapted by KLD sampling.
+      loc::ParticleFilterOptions fo = filter_->options();
+      fo.adaptive = true;
+      fo.particles = o_.tracking_particles;
+      fo.kld.max_particles = o_.tracking_particles;
+      fo.kld.min_particles = std::min<size_t>(fo.kld.min_particles, o_.tracking_particles);
+      filter_ = std::make_unique<loc::ParticleFilter>(map_, fo);
+      filter_->init_pose(e.pose, std::max(0.05, e.spread_xy), std::max(0.01, e.spread_theta));
+      return i;
+    }
+  }
+  spdlog::warn("global localization did not converge in {} updates", max_updates);
+  return std::nullopt;
+}
+
+void SimRobot::filter_step(const Odometry& odo) {
+  filter_->predict(odo);
+  filter_->update(laser_.scan(drive_.pose()), compass());
+}
+
+void SimRobot::stopped() {
+  moving_ = false;
+  client_.send(RequestOp::Stopped);
+}
+
+void SimRobot::handle(const ReceivedAnswer& a) {
+  if (zoom_ && zoom_->on_answer(a, time_s_)) {
+    map_ = *zoom_->window();
+    filter_->set_map(map_);
+    spdlog::info("new map window around ({:.1f}, {:.1f}): {} segments", zoom_->zoom().centre()->x,
+                 zoom_->zoom().centre()->y, zoom_->window()->segment_count());
+    return;
+  }
+  if (a.op == "SetPosEnd") {
+    const SetPoseParams p = decode_set_pose(a.params);
+    goal_ = Point{p.x, p.y};
+    spdlog::info("goal ({:.2f}, {:.2f}); asking for a path", p.x, p.y);
+    path_request_ = client_.send(RequestOp::GetPath);
+  } else if (a.op == "SetPath" && a.request_id == path_request_) {
+    const SetPathParams p = decode_set_path(a.params);
+    spdlog::info("path of {} waypoints, {:.1f} m", p.waypoints.size(), p.length);
+    pursuit_.set_path(p.waypoints);
+    moving_ = true;
+    path_request_.reset();
+  } else if (a.op == "Error" && a.request_id == path_request_ && goal_) {
+    // No planner on the server (or no path): head straight for the goal.
+    spdlog::warn("GetPath: {}; driving straight to the goal", a.params.value("code", "?"));
+    pursuit_.set_path({*goal_});
+    moving_ = true;
+    path_request_.reset();
+  } else if (a.op == "Abort") {
+    spdlog::warn("abort: {}", a.params.value("reason", ""));
+    pursuit_.clear();
+    goal_.reset();
+    stopped();
+  } else if (a.op == "Error") {
+    spdlog::warn("server error: {}", a.params.dump());
+  }
+}
+
+void SimRobot::run(const std::atomic<bool>& stop, double duration_s) {
+  Odometry since_update{};
+  double next_scan = 0, next_report = 0;
+  const auto wall0 = std::chrono::steady_clock::now();
+  while (!stop && time_s_ < duration_s) {
+    for (const ReceivedAnswer& a : client_.receive()) handle(a);
+    const loc::PoseEstimate e = filter_->estimate();
+    const Command c = moving_ ? pursuit_.command(e.pose) : Command{0, 0, false};
+    if (moving_ && c.arrived) {
+      spdlog::info("arrived at ({:.2f}, {:.2f}); truth ({:.2f}, {:.2f})", e.pose.x, e.pose.y, drive_.pose().x,
+                   drive_.pose().y);
+      ++goals_reached_;
+      goal_.reset();
+      stopped();
+    }
+    const Odometry odo = drive_.step(c.v, c.w, o_.step_s);
+    // Compose the increments since the last filter update (robot frame at that update).
+    const double ct = std::cos(since_update.dtheta), st = std::sin(since_update.dtheta);
+    since_update = {since_update.dx + ct * odo.dx - st * odo.dy, since_update.dy + st * odo.dx + ct * odo.dy,
+                    loc::normalize_angle(since_update.dtheta + odo.dtheta)};
+    time_s_ += o_.step_s;
+    if (time_s_ >= next_scan && (c.v != 0 || c.w != 0)) {
+      filter_step(since_update);
+      since_update = {};
+      next_scan = time_s_ + o_.scan_every_s;
+    }
+    if (time_s_ >= next_report) {
+      const loc::PoseEstimate now = filter_->estimate();
+      client_.send(RequestOp::SendPos, Json{{"x", now.pose.x}, {"y", now.pose.y}, {"theta", now.pose.theta}, {"v", c.v}, {"w", c.w}});
+      if (zoom_) zoom_->update(now.pose.point(), time_s_);
+      next_report = time_s_ + o_.report_every_s;
+    }
+    if (o_.realtime) {
+      const auto due = wall0 + std::chrono::duration<double>(time_s_);
+      std::this_thread::sleep_until(due);
+    }
+  }
+}
+
+}  // namespace fleetmap

@@ -1,0 +1,75 @@
+#pragma once
+// The simulated robot of SPEC 6: a ground-truth world, a differential drive with noisy
+// odometry, a 2D laser at its mounting height with noise (and optional people), a noisy
+// compass; it localizes on the maps the server sends (global, then tracking), reports
+// SendPos at about 3 Hz, takes goals (SetPosEnd), asks for a path (GetPath; a straight
+// line when the server has no planner) and follows it by pure pursuit, stops on Abort.
+#include <atomic>
+#include <memory>
+#include <optional>
+
+#include "client/localization/laser_simulator.h"
+#include "client/localization/particle_filter.h"
+#include "client/robot_client.h"
+#include "client/sim/differential_drive.h"
+#include "client/sim/pure_pursuit.h"
+#include "client/zoom_map_client.h"
+
+namespace fleetmap {
+
+struct SimRobotOptions {
+  double laser_height = 0.3;         // hL
+  localization::LaserSimulatorOptions laser;  // NL, FOV, sigma_L, people
+  double compass_sigma_deg = 1.0;    // compass noise (the filter assumes +-3 degrees)
+  size_t global_particles = 6000;    // NP of global localization
+  size_t tracking_particles = 1000;  // max NP once localized (KLD sampling)
+  double step_s = 0.1;               // simulation and control period
+  double scan_every_s = 0.2;         // a filter update this often while moving
+  double report_every_s = 1.0 / 3;   // SendPos at 3 Hz
+  PurePursuitOptions pursuit;
+  OdometryNoise odometry;
+  bool zoom = false;                 // keep a window (GetMap) instead of the whole map
+  ZoomMapOptions zoom_options;
+  bool realtime = true;              // sleep to keep pace with the wall clock
+  unsigned seed = 1;
+};
+
+class SimRobot {
+ public:
+  SimRobot(RobotClient& client, const Map& world, Pose start, const Map& first_map, SimRobotOptions options);
+
+  // Global localization from a compass-only prior; returns the updates it took, or
+  // nullopt when it did not converge within max_updates.
+  std::optional<int> localize(int max_updates = 40);
+
+  // Drives until stop is set or duration_s of simulated time has passed.
+  void run(const std::atomic<bool>& stop, double duration_s);
+
+  const Pose& truth() const { return drive_.pose(); }
+  localization::PoseEstimate estimate() const { return filter_->estimate(); }
+  size_t goals_reached() const { return goals_reached_; }
+
+ private:
+  void handle(const ReceivedAnswer& a);
+  void filter_step(const Odometry& odometry_since_update);
+  double compass();
+  void stopped();
+
+  RobotClient& client_;
+  SimRobotOptions o_;
+  std::shared_ptr<const RayCaster> world_;
+  DifferentialDrive drive_;
+  localization::LaserSimulator laser_;
+  std::unique_ptr<localization::ParticleFilter> filter_;
+  PurePursuit pursuit_;
+  std::unique_ptr<ZoomMapClient> zoom_;
+  std::mt19937_64 rng_;
+  Map map_;  // the map the filter works on: the whole map or the current window
+  std::optional<Point> goal_;
+  std::optional<unsigned long long> path_request_;
+  double time_s_ = 0;
+  size_t goals_reached_ = 0;
+  bool moving_ = false;
+};
+
+}  // namespace fleetmap
