@@ -1,3 +1,0 @@
-file(REMOVE_RECURSE
-  "libfleetmap_cli.a"
-)
