@@ -50,6 +50,10 @@ int main(int argc, char** argv) {
   app.add_flag("--zoom", o.zoom, "keep a map window around the robot (GetMap) instead of the whole map");
   app.add_option("--zoom-window", o.zoom_options.window_m, "zoom window side (m)")->capture_default_str();
   app.add_option("--seed", o.seed, "random seed")->capture_default_str();
+  int max_updates = 60;
+  bool force_global = false;
+  app.add_flag("--global", force_global, "localize globally even when an operator set an initial pose");
+  app.add_option("--localize-updates", max_updates, "scans allowed for global localization")->capture_default_str();
   app.add_option("--magic", magic, "magic of the Ready (default: the process id)");
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error")->capture_default_str();
   app.footer("Exit codes: 0 ok, 1 failure (database, server), 2 bad input, 5 localization failed, 64 usage.");
@@ -83,7 +87,18 @@ int main(int argc, char** argv) {
       truth = amrl ? read_amrl_file(*world, AmrlOptions{}) : read_seed_file(*world);
     }
     SimRobot robot(client, truth, {start[0], start[1], start[2]}, session.map, o);
-    if (!robot.localize()) return 5;
+    // An operator's initial pose (GetPosIni) starts tracking from it, as with AMCL's
+    // initial pose; without one, or with --global, the robot localizes globally.
+    const auto ini_id = client.send(RequestOp::GetPosIni);
+    const auto ini = client.await(ini_id, 1);
+    if (ini[0].op == "SetPosIni" && !force_global) {
+      const SetPoseParams p = decode_set_pose(ini[0].params);
+      spdlog::info("tracking from the operator's initial pose ({:.2f}, {:.2f})", p.x, p.y);
+      robot.start_tracking({p.x, p.y, p.theta.value_or(0)}, 0.3, p.theta ? 0.05 : 3.2);
+    } else if (!robot.localize(max_updates)) {
+      spdlog::error("global localization failed; set an initial pose (fleetmap pose-ini) and restart");
+      return 5;
+    }
     robot.run(g_stop, duration);
     spdlog::info("stopped: {} goal(s) reached", robot.goals_reached());
     return 0;

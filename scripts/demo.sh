@@ -1,53 +1,109 @@
 #!/usr/bin/env bash
-# The main job, end to end on a private MariaDB: start it, import the real maps and
-# the example map, show what is stored (counts, a window, an inspector's SQL query),
-# and draw the maps as SVG pictures in out/. The instance stays up for exploring:
+# The main job, end to end on a private MariaDB: start it, import the real maps, start
+# the map server and three simulated robots on the GDC1 building floor, give them goals,
+# watch them live, abort one task on the way, and end with a summary and a picture of
+# the map with the robots' trajectories (out/demo-GDC1.svg). The database stays up for
+# exploring afterwards:
 #   scripts/db.sh sql        # administrator
 #   scripts/db.sh stop
+# Settings: FLEETMAP_HOME (instance folder), FLEETMAP_PORT (default 33306),
+# DEMO_TIMEOUT (seconds to wait for the robots, default 150).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD="${FLEETMAP_BUILD_DIR:-build}"
-BIN="$BUILD/bin"
+BIN="$PWD/$BUILD/bin"
 export FLEETMAP_HOME="${FLEETMAP_HOME:-$PWD/.fleetmap}"
+TIMEOUT="${DEMO_TIMEOUT:-150}"
 [ -x "$BIN/fleetmap" ] || { echo "demo: build first: scripts/setup.sh" >&2; exit 1; }
 mkdir -p out
+FM="$BIN/fleetmap"
+PIDS=()
+cleanup() {
+  for p in "${PIDS[@]}"; do kill "$p" 2>/dev/null || true; done
+  wait 2>/dev/null || true
+}
+trap cleanup EXIT
 
 step() { printf '\n== %s\n' "$*"; }
 
 step "private MariaDB ($FLEETMAP_HOME)"
 bash scripts/db.sh start
+CONF="$FLEETMAP_HOME/fleetmap.conf"
 
 step "import the real maps (AMRL vector maps) and the example campus"
-"$BIN/fleetmap" map import maps/amrl/GDC1.vectormap.txt --name GDC1 --replace
-"$BIN/fleetmap" map import maps/amrl/UT_Campus.vectormap.txt --name UT_Campus --in-out 1 --semantic wall,building --replace
-"$BIN/fleetmap" map import maps/example-campus.map --name example-campus --replace
+"$FM" map import maps/amrl/GDC1.vectormap.txt --name GDC1 --replace
+"$FM" map import maps/amrl/UT_Campus.vectormap.txt --name UT_Campus --in-out 1 --semantic wall,building --replace
+"$FM" map import maps/example-campus.map --name example-campus --replace
+"$FM" map list
 
-step "stored maps"
-"$BIN/fleetmap" map list
-
-step "the example campus, by shape type"
-"$BIN/fleetmap" map check maps/example-campus.map
-
-step "a 10 m x 8 m window of the example campus around (20, 30), as a robot gets it with GetMap"
-"$BIN/fleetmap" window example-campus 20 30 10 8 | head -n 24
-echo "..."
-
-step "an inspector's query (plain SQL over TCP with the inspector account): walls crossing a 40 m square of the campus"
-CONF="$FLEETMAP_HOME/fleetmap.conf"
+step "an inspector's query (plain SQL over TCP with the inspector account): walls crossing a 40 m square"
 IPW="$(awk '/^\[inspector\]/{f=1;next} /^\[/{f=0} f&&$1=="password"{print $3}' "$CONF")"
 PORT="$(awk '$1=="port"{print $3; exit}' "$CONF")"
-SQL="SELECT map, COUNT(*) AS segments, ROUND(SUM(ST_Length(geom)), 1) AS metres
-     FROM v_segments
+SQL="SELECT map, COUNT(*) AS segments, ROUND(SUM(ST_Length(geom)), 1) AS metres FROM v_segments
      WHERE MBRIntersects(geom, ST_GeomFromText('POLYGON((-20 -20, 20 -20, 20 20, -20 20, -20 -20))'))
      GROUP BY map ORDER BY map;"
 echo "$SQL"
 MYSQL_PWD="$IPW" mariadb --no-defaults -h 127.0.0.1 -P "$PORT" -u fleetmap_inspector fleetmap --table -e "$SQL"
 
-step "pictures"
-for m in GDC1 UT_Campus example-campus; do
-  "$BIN/fleetmap" map export "$m" --format svg -o "out/$m.svg"
-  "$BIN/fleetmap" map export "$m" --format geojson -o "out/$m.geojson"
-  echo "out/$m.svg  out/$m.geojson"
+STARTED="$(date '+%F %T')"
+step "the map server"
+"$BIN/fleetmap-server" --config "$CONF" > out/demo-server.log 2>&1 &
+PIDS+=($!)
+sleep 0.5
+"$BIN/fleetmap-server" --config "$CONF" --check
+
+step "three robots with their own database accounts, on GDC1"
+mkdir -p "$FLEETMAP_HOME/robots"
+# name, true start pose (x y theta), goal: all in the long corridor of the upper wing
+ROBOTS=("r1 -24 8.6 0.0 28 8.8" "r2 30 8.8 3.14 -8 8.5" "r3 -5 8.5 0.0 20 8.7")
+for spec in "${ROBOTS[@]}"; do
+  read -r name x y th gx gy <<<"$spec"
+  "$FM" robot remove "$name" >/dev/null 2>&1 || true
+  "$FM" robot add "$name" --map GDC1 --password-out "$FLEETMAP_HOME/robots/$name.pw" | head -n 1
+  # The operator's initial pose: each robot starts tracking from it (GetPosIni).
+  "$FM" pose-ini "$name" "$x" "$y" "$th" >/dev/null
+  "$BIN/fleetmap-robot" --config "$CONF" --user "$name" --password-file "$FLEETMAP_HOME/robots/$name.pw" \
+    --start "$x" "$y" "$th" --particles 3000 --tracking-particles 800 --speed 1.2 --seed "${#PIDS[@]}" \
+    > "out/demo-$name.log" 2>&1 &
+  PIDS+=($!)
 done
 
-step "done: the database is still running (scripts/db.sh stop to stop it)"
+step "localization (each robot on the map the server sent it, from its initial pose)"
+for i in $(seq 1 60); do
+  n="$( (grep -l -E "localized after|tracking from" out/demo-r*.log 2>/dev/null || true) | wc -l)"
+  [ "$n" -ge 3 ] && break
+  sleep 1
+done
+(grep -h -E "localized after|tracking from|failed" out/demo-r*.log || true) | sed 's/^/  /'
+
+step "goals (the server pushes SetPosEnd; each robot acknowledges, asks for a path, drives)"
+for spec in "${ROBOTS[@]}"; do
+  read -r name x y th gx gy <<<"$spec"
+  "$FM" goal "$name" "$gx" "$gy"
+done
+
+step "live status (every 3 s); r3's task is aborted on the way"
+aborted=0
+for i in $(seq 1 $((TIMEOUT / 3))); do
+  sleep 3
+  echo "--- $(date +%T)"
+  "$FM" robots
+  if [ "$aborted" = 0 ] && [ "$i" -ge 3 ]; then
+    "$FM" abort r3 --reason "demo: corridor closed"
+    aborted=1
+  fi
+  open="$(MYSQL_PWD="$IPW" mariadb --no-defaults -h 127.0.0.1 -P "$PORT" -u fleetmap_inspector fleetmap -N -e \
+    "SELECT COUNT(*) FROM v_tasks WHERE robot IN ('r1','r2','r3') AND state IN ('assigned','acknowledged','active')")"
+  [ "$open" = 0 ] && break
+done
+
+step "summary"
+"$FM" tasks --limit 3
+"$FM" map export GDC1 --format svg --trajectories --since "$STARTED" -o out/demo-GDC1.svg
+for r in r1 r2 r3; do
+  echo "  $r: $("$FM" trajectory "$r" --since "$STARTED" | tail -n +2 | wc -l) poses reported; log out/demo-$r.log"
+done
+echo "  picture: out/demo-GDC1.svg (map with the three trajectories); server log: out/demo-server.log"
+for m in UT_Campus example-campus; do "$FM" map export "$m" --format svg -o "out/$m.svg"; done
+
+step "done: robots and server stopped, the database is still running (scripts/db.sh stop to stop it)"

@@ -15,6 +15,7 @@
 #include "common/map_validation.h"
 #include "common/map_window.h"
 #include "common/seed_format.h"
+#include "protocol/fleet_store.h"
 #include "protocol/map_store.h"
 #include "server/exit_codes.h"
 
@@ -139,7 +140,11 @@ void add_map_commands(CLI::App& app, CliContext& ctx, int* exit_code) {
     auto name = std::make_shared<std::string>();
     auto format = std::make_shared<std::string>("seed");
     auto out = std::make_shared<std::string>();
+    auto tracks = std::make_shared<bool>(false);
     auto* cmd = map->add_subcommand("export", "write a stored map as seed text, GeoJSON or SVG");
+    cmd->add_flag("--trajectories", *tracks, "svg: draw the trajectories of the map's robots");
+    auto since = std::make_shared<std::string>();
+    cmd->add_option("--since", *since, "with --trajectories: only poses since this timestamp or age (10m, 2h)");
     cmd->add_option("NAME", *name, "map name")->required();
     cmd->add_option("--format", *format, "seed, geojson or svg")
         ->check(CLI::IsMember({"seed", "geojson", "svg"}))
@@ -154,6 +159,18 @@ void add_map_commands(CLI::App& app, CliContext& ctx, int* exit_code) {
       else {
         SvgOptions so;
         so.title = *name;
+        if (*tracks) {
+          FleetStore fleet(ctx.connection());
+          for (const RobotStatus& r : fleet.status()) {
+            if (r.map != *name) continue;
+            SvgTrack t;
+            t.label = r.name;
+            std::optional<std::string> from;
+            if (!since->empty()) from = *since;
+            for (const TrajectoryPoint& p : fleet.trajectory(r.name, from)) t.points.push_back({p.x, p.y});
+            if (!t.points.empty()) so.tracks.push_back(std::move(t));
+          }
+        }
         text = write_svg(m, so);
       }
       write_output(text, *out);

@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
+#include <utility>
 
 #include "client/localization/parallel.h"
 #include "common/grid_ray_caster.h"
@@ -52,7 +54,7 @@ void ParticleFilter::set_map(const Map& map, std::shared_ptr<const RayCaster> ca
 }
 
 void ParticleFilter::init_global(std::optional<double> compass) {
-  const size_t n = options_.particles;
+  const size_t n = std::max(options_.particles, options_.global_particles);
   poses_.resize(n);
   std::uniform_real_distribution<double> any_heading(-kPi, kPi);
   for (Pose& p : poses_) {
@@ -85,17 +87,21 @@ void ParticleFilter::update(const std::vector<double>& ranges, std::optional<dou
   if (poses_.empty()) throw std::logic_error("ParticleFilter::update: no particles (call init_global or init_pose)");
   const bool use_compass = compass && options_.compass_weight;
   const RayCaster& caster = *caster_;
+  log_likelihood_.resize(poses_.size());
   parallel_for(options_.threads, poses_.size(), [&](int, size_t begin, size_t end) {
     std::vector<double> synthetic(beams_.size());
     for (size_t i = begin; i < end; ++i) {
       const Pose& p = poses_[i];
       caster.cast_scan(p.point(), p.theta, beams_, synthetic.data());
-      // seed 000 eq. (6): w(t) = w(t-1) * 1 / sum_j 1 / L(delta_j); kept as logarithms.
-      double lw = std::log(weights_[i]) + sensor_.log_weight(ranges.data(), synthetic.data(), beams_.size());
-      if (use_compass) lw += compass_.log_likelihood(p.theta, *compass);
-      weights_[i] = lw;  // a log-weight until normalize_weights()
+      double ll = sensor_.log_weight(ranges.data(), synthetic.data(), beams_.size());
+      if (use_compass) ll += compass_.log_likelihood(p.theta, *compass);
+      log_likelihood_[i] = ll;
     }
   });
+  last_phi_ = choose_tempering(log_likelihood_);
+  // seed 000 eq. (6): w(t) = w(t-1) * 1 / sum_j 1 / L(delta_j), as logarithms (to the
+  // power phi when tempered).
+  for (size_t i = 0; i < poses_.size(); ++i) weights_[i] = std::log(weights_[i]) + last_phi_ * log_likelihood_[i];
   normalize_weights();
   ++updates_;
   double sum_sq = 0;
@@ -104,6 +110,36 @@ void ParticleFilter::update(const std::vector<double>& ranges, std::optional<dou
     resample();
     roughen();
   }
+}
+
+double ParticleFilter::choose_tempering(const std::vector<double>& ll) const {
+  if (!(options_.tempering_ess > 0)) return 1;
+  const size_t n = poses_.size();
+  // Effective sample size of w(t-1) * L^phi.
+  std::vector<double> lw(n);
+  const auto ess = [&](double phi) {
+    double top = -std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < n; ++i) {
+      lw[i] = std::log(weights_[i]) + phi * ll[i];
+      if (!std::isnan(lw[i])) top = std::max(top, lw[i]);
+    }
+    if (std::isinf(top)) return 0.0;
+    double s = 0, s2 = 0;
+    for (double v : lw) {
+      const double w = std::isnan(v) ? 0.0 : std::exp(v - top);
+      s += w;
+      s2 += w * w;
+    }
+    return s * s / s2;
+  };
+  const double target = options_.tempering_ess * static_cast<double>(n);
+  if (ess(1.0) >= target || ess(0.0) < target) return 1;
+  double lo = 0, hi = 1;  // ess(lo) >= target > ess(hi)
+  for (int k = 0; k < 30; ++k) {
+    const double mid = (lo + hi) / 2;
+    (ess(mid) >= target ? lo : hi) = mid;
+  }
+  return lo;
 }
 
 void ParticleFilter::normalize_weights() {
@@ -130,18 +166,51 @@ void ParticleFilter::resample() {
   ++resamplings_;
 }
 
+namespace {
+
+// Weighted mean of poses[i] for the i where take(i): (x, y) and circular theta; the sum
+// of weights, and of their cosines and sines, for the spreads.
+struct WeightedMean {
+  Pose pose;
+  double weight = 0, cos_sum = 0, sin_sum = 0;
+};
+
+template <typename Take>
+WeightedMean weighted_mean(const std::vector<Pose>& poses, const std::vector<double>& weights, Take take) {
+  WeightedMean m;
+  double mx = 0, my = 0;
+  for (size_t i = 0; i < poses.size(); ++i) {
+    if (!take(i)) continue;
+    const double w = weights[i];
+    m.weight += w;
+    mx += w * poses[i].x;
+    my += w * poses[i].y;
+    m.cos_sum += w * std::cos(poses[i].theta);
+    m.sin_sum += w * std::sin(poses[i].theta);
+  }
+  if (m.weight > 0) m.pose = {mx / m.weight, my / m.weight, std::atan2(m.sin_sum, m.cos_sum)};
+  return m;
+}
+
+uint64_t cell_key(int64_t ix, int64_t iy) { return static_cast<uint64_t>(ix) << 32 ^ static_cast<uint32_t>(iy); }
+
+}  // namespace
+
 void ParticleFilter::roughen() {
   if (!(options_.roughening > 0) || poses_.size() < 2) return;
-  const PoseEstimate e = estimate();
   // Per-dimension standard deviations of the (equally weighted) resampled cloud.
+  const size_t count = poses_.size();
+  const double n = static_cast<double>(count);
+  const WeightedMean m = weighted_mean(poses_, weights_, [](size_t) { return true; });
   double vx = 0, vy = 0;
   for (const Pose& p : poses_) {
-    vx += (p.x - e.pose.x) * (p.x - e.pose.x);
-    vy += (p.y - e.pose.y) * (p.y - e.pose.y);
+    vx += (p.x - m.pose.x) * (p.x - m.pose.x);
+    vy += (p.y - m.pose.y) * (p.y - m.pose.y);
   }
-  const double n = static_cast<double>(poses_.size());
+  const double r = std::min(1.0, std::hypot(m.cos_sum, m.sin_sum) / m.weight);
+  const double spread_theta = r > 0 ? std::sqrt(-2 * std::log(r)) : kPi;
   const double scale = options_.roughening * std::pow(n, -1.0 / 3.0);
-  const double sx = scale * std::sqrt(vx / n), sy = scale * std::sqrt(vy / n), st = scale * e.spread_theta;
+  const double sx = scale * std::sqrt(vx / n), sy = scale * std::sqrt(vy / n), st = scale * spread_theta;
   parallel_for(options_.threads, poses_.size(), [&](int k, size_t begin, size_t end) {
     std::mt19937_64& rng = chunk_rngs_[k];
     std::normal_distribution<double> n01(0.0, 1.0);
@@ -156,30 +225,47 @@ PoseEstimate ParticleFilter::estimate() const {
   PoseEstimate e;
   e.particles = poses_.size();
   if (poses_.empty()) return e;
-  double sw = 0, mx = 0, my = 0, sc = 0, ss = 0, sum_sq = 0;
-  for (size_t i = 0; i < poses_.size(); ++i) {
-    const double w = weights_[i];
-    const Pose& p = poses_[i];
-    sw += w;
-    mx += w * p.x;
-    my += w * p.y;
-    sc += w * std::cos(p.theta);
-    ss += w * std::sin(p.theta);
-    sum_sq += w * w;
-  }
-  mx /= sw;
-  my /= sw;
-  double var = 0;
+  const WeightedMean all = weighted_mean(poses_, weights_, [](size_t) { return true; });
+  double var = 0, sum_sq = 0;
   for (size_t i = 0; i < poses_.size(); ++i) {
     const Pose& p = poses_[i];
-    var += weights_[i] * ((p.x - mx) * (p.x - mx) + (p.y - my) * (p.y - my));
+    var += weights_[i] * ((p.x - all.pose.x) * (p.x - all.pose.x) + (p.y - all.pose.y) * (p.y - all.pose.y));
+    sum_sq += weights_[i] * weights_[i];
   }
-  const double r = std::min(1.0, std::hypot(sc, ss) / sw);
-  e.pose = {mx, my, std::atan2(ss, sc)};
-  e.spread_xy = std::sqrt(var / sw);
+  const double r = std::min(1.0, std::hypot(all.cos_sum, all.sin_sum) / all.weight);
+  e.mean = all.pose;
+  e.spread_xy = std::sqrt(var / all.weight);
   e.spread_theta = r > 0 ? std::sqrt(-2 * std::log(r)) : kPi;
-  e.n_eff = sw * sw / sum_sq;
+  e.n_eff = all.weight * all.weight / sum_sq;
   e.converged = e.spread_xy < options_.converged_xy && e.spread_theta < options_.converged_theta;
+
+  // The heaviest 3 x 3 block of cells.
+  const double inv = 1 / options_.cluster_cell;
+  std::vector<std::pair<int64_t, int64_t>> cell(poses_.size());
+  std::unordered_map<uint64_t, double> mass;
+  for (size_t i = 0; i < poses_.size(); ++i) {
+    cell[i] = {static_cast<int64_t>(std::floor(poses_[i].x * inv)), static_cast<int64_t>(std::floor(poses_[i].y * inv))};
+    mass[cell_key(cell[i].first, cell[i].second)] += weights_[i];
+  }
+  double best = -1;
+  std::pair<int64_t, int64_t> centre{};
+  for (size_t i = 0; i < poses_.size(); ++i) {
+    double m = 0;
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy) {
+        const auto it = mass.find(cell_key(cell[i].first + dx, cell[i].second + dy));
+        if (it != mass.end()) m += it->second;
+      }
+    if (m > best) {
+      best = m;
+      centre = cell[i];
+    }
+  }
+  const WeightedMean c = weighted_mean(poses_, weights_, [&](size_t i) {
+    return std::abs(cell[i].first - centre.first) <= 1 && std::abs(cell[i].second - centre.second) <= 1;
+  });
+  e.pose = c.weight > 0 ? c.pose : all.pose;
+  e.cluster_weight = c.weight / all.weight;
   return e;
 }
 

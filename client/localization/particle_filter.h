@@ -3,8 +3,9 @@
 // tracking on the segment map: initialise, then per laser scan predict (odometry),
 // update (eq. 4-6 on synthetic rays) and resample.
 //
-//  * Global initialisation: NP particles uniform over free space (free_space.h: the
-//    border minus closed obstacles), headings from the compass prior (+-3 degrees).
+//  * Global initialisation: NP particles (or global_particles, more, on a map larger than
+//    the seed's) uniform over free space (free_space.h: the border minus closed
+//    obstacles), headings from the compass prior (+-3 degrees).
 //  * predict: each particle moves by its own draw of the odometry model (motion_model.h).
 //  * update: each particle casts NL synthetic rays through the RayCaster (the fast
 //    GridRayCaster unless one is given) and its weight is multiplied by eq. (6)
@@ -17,7 +18,10 @@
 //    N(0, K s N^(-1/3)) per dimension, s the cloud's standard deviation in it, so that
 //    copies of one particle do not stay identical while the robot stands still.
 //  * estimate: weighted mean (circular mean for theta) and spread, the standard
-//    deviations of position (sqrt(var x + var y)) and of heading (circular).
+//    deviations of position (sqrt(var x + var y)) and of heading (circular). While the
+//    cloud still holds several hypotheses their mean lies between them, so the pose
+//    reported is the weighted mean of the heaviest cluster (as Nav2's AMCL does): the
+//    3 x 3 block of cluster_cell cells holding the most weight.
 //
 // Reproducible: every random draw comes from std::mt19937_64 generators seeded from
 // `seed` (one per thread chunk, one for the sequential steps); the same seed, options
@@ -41,6 +45,9 @@ namespace fleetmap::localization {
 
 struct ParticleFilterOptions {
   size_t particles = 6000;          // NP (seed 000 section 4.1)
+  // Particles drawn by init_global when larger than NP; the first resampling brings the
+  // set back to NP. For maps much larger than the seed's 100 m x 100 m (0 or <= NP: NP).
+  size_t global_particles = 0;
   int beams = 131;                  // NL
   double fov = kPi;                 // the NL beams spread evenly over 180 degrees
   RayCasterOptions laser{0.3, 15.0};  // hL and RMAX; RMAX is also the sensor model's
@@ -49,9 +56,13 @@ struct ParticleFilterOptions {
   double compass_half_width = deg2rad(3.0);
   bool compass_weight = true;       // weigh by the compass at each update given one
   double resample_threshold = 0.5;  // resample when N_eff < this * N (1: every update)
+  // Adaptive tempering: when a scan's likelihood would leave fewer than this share of
+  // the particles effective, only its power phi < 1 is applied (0 disables).
+  double tempering_ess = 0.0;
   double roughening = 0.2;          // K; 0 disables
   bool adaptive = false;            // KLD sampling instead of a fixed NP
   KldOptions kld;
+  double cluster_cell = 1.0;              // metres, for PoseEstimate::pose
   double converged_xy = 0.5;              // metres of spread under which
   double converged_theta = deg2rad(5.0);  // and radians: PoseEstimate::converged
   int threads = 2;
@@ -59,8 +70,10 @@ struct ParticleFilterOptions {
 };
 
 struct PoseEstimate {
-  Pose pose;                // weighted mean; theta the circular mean
-  double spread_xy = 0;     // metres: sqrt(weighted var x + var y)
+  Pose pose;                // weighted mean of the heaviest cluster (below)
+  Pose mean;                // weighted mean of every particle; theta the circular mean
+  double cluster_weight = 0;  // the heaviest cluster's share of the weight
+  double spread_xy = 0;     // metres: sqrt(weighted var x + var y), every particle
   double spread_theta = 0;  // radians: sqrt(-2 ln R), R the mean resultant length
   double n_eff = 0;         // 1 / sum w^2 of the normalized weights
   size_t particles = 0;
@@ -101,8 +114,10 @@ class ParticleFilter {
   const RayCaster& ray_caster() const { return *caster_; }
   size_t updates() const { return updates_; }
   size_t resamplings() const { return resamplings_; }
+  double last_tempering() const { return last_phi_; }  // phi of the last update, 1 untempered
 
  private:
+  double choose_tempering(const std::vector<double>& log_likelihood) const;
   void normalize_weights();
   void resample();
   void roughen();
@@ -116,9 +131,11 @@ class ParticleFilter {
   std::unique_ptr<FreeSpace> free_space_;
   std::vector<Pose> poses_;
   std::vector<double> weights_;  // normalized, sum 1
+  std::vector<double> log_likelihood_;  // of the last scan, per particle
   std::mt19937_64 rng_;                 // sequential steps
   std::vector<std::mt19937_64> chunk_rngs_;  // one per thread chunk
   size_t updates_ = 0, resamplings_ = 0;
+  double last_phi_ = 1;
 };
 
 }  // namespace fleetmap::localization

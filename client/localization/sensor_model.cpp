@@ -18,27 +18,33 @@ constexpr double kMaxExponent = 700;
 SensorModel::SensorModel(SensorModelOptions options) : options_(options) {
   if (!(options.sigma_m > 0)) throw std::invalid_argument("SensorModelOptions.sigma_m: expected > 0 metres");
   if (!(options.rmax > 0)) throw std::invalid_argument("SensorModelOptions.rmax: expected > 0 metres");
-  if (!(options.alpha >= 0) || !(options.beta >= 0) || options.alpha + options.beta == 0)
-    throw std::invalid_argument("SensorModelOptions.alpha, beta: expected >= 0 and not both 0");
+  if (!(options.alpha >= 0) || !(options.beta >= 0) || !(options.gamma >= 0) ||
+      options.alpha + options.beta + options.gamma == 0)
+    throw std::invalid_argument("SensorModelOptions.alpha, beta, gamma: expected >= 0 and not all 0");
   normal_peak_ = options.alpha / (std::sqrt(2 * kPi) * options.sigma_m);
   log_normal_peak_ = options.alpha > 0 ? std::log(normal_peak_) : kNegInf;
   inv_two_var_ = 1 / (2 * options.sigma_m * options.sigma_m);
   uniform_ = options.beta / options.rmax;
+  floor_ = options.gamma / (2 * options.rmax);
+}
+
+double SensorModel::uniform_terms(double delta) const {
+  // seed 000 eq. (5): the uniform term covers [-RMAX, 0], measured shorter than expected.
+  const double u = (delta <= 0 && delta >= -options_.rmax) ? uniform_ : 0.0;
+  return u + (std::fabs(delta) <= options_.rmax ? floor_ : 0.0);
 }
 
 double SensorModel::likelihood(double delta) const {
-  // seed 000 eq. (5); the uniform term covers [-RMAX, 0]: measured shorter than expected.
-  const double u = (delta <= 0 && delta >= -options_.rmax) ? uniform_ : 0.0;
-  return normal_peak_ * std::exp(-delta * delta * inv_two_var_) + u;
+  return normal_peak_ * std::exp(-delta * delta * inv_two_var_) + uniform_terms(delta);
 }
 
 double SensorModel::log_likelihood(double delta) const {
   const double q = delta * delta * inv_two_var_;
-  const bool uniform = delta <= 0 && delta >= -options_.rmax && uniform_ > 0;
+  const double u = uniform_terms(delta);
   const double log_normal = log_normal_peak_ - q;
-  if (!uniform) return log_normal;
+  if (!(u > 0)) return log_normal;
   // log(e^a + e^b) without overflow or underflow.
-  const double log_u = std::log(uniform_);
+  const double log_u = std::log(u);
   const double hi = std::max(log_normal, log_u), lo = std::min(log_normal, log_u);
   return hi + std::log1p(std::exp(lo - hi));
 }
@@ -56,8 +62,7 @@ double SensorModel::log_weight(const double* measured, const double* synthetic, 
     const double d = measured[j] - synthetic[j];
     const double q = d * d * inv_two_var_;
     if (q > kMaxExponent) return log_weight_harmonic_slow(measured, synthetic, n);
-    const double u = (d <= 0 && d >= -options_.rmax) ? uniform_ : 0.0;
-    inv_sum += 1 / (normal_peak_ * std::exp(-q) + u);
+    inv_sum += 1 / (normal_peak_ * std::exp(-q) + uniform_terms(d));
   }
   if (n == 0) return 0;
   return -std::log(inv_sum);

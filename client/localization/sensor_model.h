@@ -19,6 +19,11 @@
 // below the others; BeamCombination::Product is the usual independent-beam product
 // (Thrun et al. 2005, eq. 6.2), kept for comparison (bench-localization --combination).
 // Both are computed as logarithms so that no weight underflows.
+//
+// Beyond the seed, gamma adds a uniform floor on both sides, gamma U(-RMAX, RMAX): eq. (5)
+// floors only readings shorter than expected, so a particle that sees nothing (open
+// space, every delta <= 0) outscores one a few centimetres off whose rays graze a corner
+// (a few deltas of metres > 0); the floor bounds what one such ray can cost.
 #include <cstddef>
 
 namespace fleetmap::localization {
@@ -33,13 +38,16 @@ struct SensorModelOptions {
   double beta = 0.1;     // seed 000 eq. (5): weight of the uniform term
   double sigma_m = 0.5;  // metres, standard deviation of the normal term
   double rmax = 15.0;    // metres, RMAX: the laser's range and the uniform's width
+  // Not in the seed: gamma U(-RMAX, RMAX), a floor for readings off either way (Thrun
+  // et al. 2005's z_rand); 0 keeps eq. (5) exactly.
+  double gamma = 0.0;
   BeamCombination combination = BeamCombination::Harmonic;
 };
 
 class SensorModel {
  public:
-  // Throws std::invalid_argument when sigma_m or rmax is not positive, or alpha or beta
-  // is negative, or both are zero.
+  // Throws std::invalid_argument when sigma_m or rmax is not positive, or alpha, beta or
+  // gamma is negative, or all are zero.
   explicit SensorModel(SensorModelOptions options = {});
 
   // Eq. (5) for one beam, and its natural logarithm (exact also where L underflows).
@@ -53,6 +61,7 @@ class SensorModel {
   const SensorModelOptions& options() const { return options_; }
 
  private:
+  double uniform_terms(double delta) const;  // beta U(-RMAX, 0) + gamma U(-RMAX, RMAX)
   double log_weight_harmonic_slow(const double* measured, const double* synthetic, size_t n) const;
 
   SensorModelOptions options_;
@@ -60,6 +69,7 @@ class SensorModel {
   double log_normal_peak_;
   double inv_two_var_;      // 1 / (2 sigma_m^2)
   double uniform_;          // beta / RMAX
+  double floor_;            // gamma / (2 RMAX)
 };
 
 }  // namespace fleetmap::localization

@@ -11,6 +11,8 @@ namespace fleetmap {
 
 namespace loc = localization;
 
+constexpr double kBumperDistance = 0.15;  // metres from the laser's origin to the front
+
 SimRobot::SimRobot(RobotClient& client, const Map& world, Pose start, const Map& first_map, SimRobotOptions o)
     : client_(client),
       o_(o),
@@ -47,19 +49,25 @@ std::optional<int> SimRobot::localize(int max_updates) {
       spdlog::info("localized after {} updates at ({:.2f}, {:.2f}, {:.1f} deg); truth ({:.2f}, {:.2f}, {:.1f} deg)", i,
                    e.pose.x, e.pose.y, loc::rad2deg(e.pose.theta), drive_.pose().x, drive_.pose().y,
                    loc::rad2deg(drive_.pose().theta));
-      // Tracking: fewer particles, their count adapted by KLD sampling.
-      loc::ParticleFilterOptions fo = filter_->options();
-      fo.adaptive = true;
-      fo.particles = o_.tracking_particles;
-      fo.kld.max_particles = o_.tracking_particles;
-      fo.kld.min_particles = std::min<size_t>(fo.kld.min_particles, o_.tracking_particles);
-      filter_ = std::make_unique<loc::ParticleFilter>(map_, fo);
-      filter_->init_pose(e.pose, std::max(0.05, e.spread_xy), std::max(0.01, e.spread_theta));
+      start_tracking(e.pose, std::max(0.05, e.spread_xy), std::max(0.01, e.spread_theta));
       return i;
     }
   }
   spdlog::warn("global localization did not converge in {} updates", max_updates);
   return std::nullopt;
+}
+
+void SimRobot::start_tracking(const Pose& pose, double sd_xy, double sd_theta) {
+  // Tracking: fewer particles, their count adapted by KLD sampling.
+  loc::ParticleFilterOptions fo = filter_->options();
+  fo.adaptive = true;
+  fo.particles = o_.tracking_particles;
+  fo.kld.max_particles = o_.tracking_particles;
+  fo.kld.min_particles = std::min<size_t>(fo.kld.min_particles, o_.tracking_particles);
+  filter_ = std::make_unique<loc::ParticleFilter>(map_, fo);
+  filter_->init_pose(pose, sd_xy, sd_theta);
+  // A few scans standing still settle the cloud on the map.
+  for (int i = 0; i < 3; ++i) filter_->update(laser_.scan(drive_.pose()), compass());
 }
 
 void SimRobot::filter_step(const Odometry& odo) {
@@ -122,7 +130,21 @@ void SimRobot::run(const std::atomic<bool>& stop, double duration_s) {
       goal_.reset();
       stopped();
     }
-    const Odometry odo = drive_.step(c.v, c.w, o_.step_s);
+    // The true robot cannot drive through a wall: its bumper stops it (the estimate may
+    // be wrong, the world is not).
+    double v = c.v;
+    if (v != 0) {
+      const Pose& t = drive_.pose();
+      const double heading = v > 0 ? t.theta : t.theta + M_PI;
+      if (world_->cast(t.point(), heading) < std::abs(v) * o_.step_s + kBumperDistance) {
+        if (!bumped_) spdlog::warn("bumped into a wall at ({:.2f}, {:.2f})", t.x, t.y);
+        bumped_ = true;
+        v = 0;
+      } else {
+        bumped_ = false;
+      }
+    }
+    const Odometry odo = drive_.step(v, c.w, o_.step_s);
     // Compose the increments since the last filter update (robot frame at that update).
     const double ct = std::cos(since_update.dtheta), st = std::sin(since_update.dtheta);
     since_update = {since_update.dx + ct * odo.dx - st * odo.dy, since_update.dy + st * odo.dx + ct * odo.dy,

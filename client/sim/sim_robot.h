@@ -41,6 +41,8 @@ class SimRobot {
   // Global localization from a compass-only prior; returns the updates it took, or
   // nullopt when it did not converge within max_updates.
   std::optional<int> localize(int max_updates = 40);
+  // Tracking from a known pose (the operator's initial pose, GetPosIni).
+  void start_tracking(const Pose& pose, double sd_xy, double sd_theta);
 
   // Drives until stop is set or duration_s of simulated time has passed.
   void run(const std::atomic<bool>& stop, double duration_s);
@@ -70,6 +72,7 @@ class SimRobot {
   double time_s_ = 0;
   size_t goals_reached_ = 0;
   bool moving_ = false;
+  bool bumped_ = false;
 };
 
 }  // namespace fleetmap
