@@ -175,7 +175,7 @@ Json encode_abort(const std::string& reason) { return {{"reason", reason}}; }
 StartParams decode_start(const Json& j) {
   require_object(j);
   const long long id = integer(j, "robot_id");
-  if (id <= 0) bad("robot_id", "a positive integer");
+  if (id <= 0 || id > 4294967295LL) bad("robot_id", "a positive 32-bit integer");
   return {integer(j, "magic"), static_cast<unsigned>(id), number(j, "alive_period_s")};
 }
 
@@ -188,8 +188,11 @@ SetMapParams decode_set_map(const Json& j) {
     if (!(*b)[i].is_number()) bad("border", "four numbers");
     p.border[i] = (*b)[i].get<double>();
   }
-  p.obstacles = static_cast<size_t>(integer(j, "obstacles"));
-  p.segments = static_cast<size_t>(integer(j, "segments"));
+  const long long obstacles = integer(j, "obstacles"), segments = integer(j, "segments");
+  if (obstacles < 0) bad("obstacles", "a count >= 0");
+  if (segments < 0) bad("segments", "a count >= 0");
+  p.obstacles = static_cast<size_t>(obstacles);
+  p.segments = static_cast<size_t>(segments);
   p.encoding = optional_encoding(j).value_or(MapEncoding::Seed);
   return p;
 }

@@ -181,8 +181,16 @@ CREATE TABLE IF NOT EXISTS sa (
 
 -- The database, not the robot, says who sent a request and when (SPEC 5.1, 9):
 -- db_user from the account, created_at from SYSDATE(6) (a robot can SET timestamp),
--- id from AUTO_INCREMENT (a robot-chosen id could exhaust the counter for everyone).
+-- id from AUTO_INCREMENT (a robot-chosen id could exhaust the counter for everyone;
+-- so could SET insert_id, which NEW.id = NULL does not override: refused outright).
+DELIMITER //
 CREATE OR REPLACE TRIGGER rr_stamp BEFORE INSERT ON rr FOR EACH ROW
+BEGIN
+  IF @@session.insert_id <> 0 THEN
+    SIGNAL SQLSTATE '45000' SET MESSAGE_TEXT = 'rr: SET insert_id is not allowed';
+  END IF;
   SET NEW.db_user = SUBSTRING_INDEX(USER(), '@', 1),
       NEW.id = NULL,
       NEW.created_at = SYSDATE(6);
+END//
+DELIMITER ;
