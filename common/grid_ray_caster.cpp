@@ -94,8 +94,4 @@ double GridRayCaster::cast_direction(Point o, Point d) const {
   }
 }
 
-std::unique_ptr<RayCaster> make_fast_ray_caster(const Map& map, RayCasterOptions options) {
-  return std::make_unique<GridRayCaster>(map, options);
-}
-
 }  // namespace fleetmap

@@ -1,15 +1,16 @@
 #pragma once
-// The fast RayCaster: rays walk a SegmentGrid (common/segment_grid.h) cell by cell in
-// the order they cross them (Amanatides & Woo), test the walls listed in each cell with
-// the shared exact test (common/ray_segment.h), and jump across empty space by each
-// empty cell's skip distance. A walk ends when the nearest hit so far lies within the
-// cell just tested, or at rmax. Stairs and ramps are judged as a whole
-// (common/ray_rules.h) the first time the walk meets a cell that lists them.
+// A RayCaster whose rays walk a SegmentGrid (common/segment_grid.h) cell by cell in the
+// order they cross them (Amanatides & Woo), test the walls listed in each cell with the
+// shared exact test (common/ray_segment.h), and jump across empty space by each empty
+// cell's skip distance. A walk ends when the nearest hit so far lies within the cell
+// just tested, or at rmax. Stairs and ramps are judged as a whole (common/ray_rules.h)
+// when the walk first meets a cell that lists them.
 //
-// Results equal SeedRayCaster's: same segments, same test, and the grid only decides
-// which segments are tested (tests/common/ray_caster_equivalence_test.cpp).
+// Its memory does not depend on rmax, but on random poses each ray touches cells of
+// its own, which costs more than SweepRayCaster's one list per scan (bench-raycast
+// --alternatives): it is make_fast_ray_caster()'s fallback when those lists would not
+// fit. Results equal SeedRayCaster's (tests/common/ray_caster_equivalence_test.cpp).
 #include <cstddef>
-#include <memory>
 
 #include "common/map.h"
 #include "common/ray_caster.h"
@@ -40,8 +41,5 @@ class GridRayCaster : public RayCaster {
   LaserObstacles obstacles_;  // for the stairs and ramps; walls live in the grid
   SegmentGrid grid_;
 };
-
-// The fast caster with its default options (what the robot uses).
-std::unique_ptr<RayCaster> make_fast_ray_caster(const Map& map, RayCasterOptions options);
 
 }  // namespace fleetmap

@@ -4,15 +4,20 @@
 // A 2D laser mounted laser_height metres over the floor casts rays from a point of the
 // map plane; a ray ends at the first obstacle that stops it, or at rmax when nothing
 // does. What stops a ray (walls lower than the laser, stairs seen from above or below,
-// ramps) is decided by common/ray_rules.h, shared by every implementation:
+// ramps) is decided by common/ray_rules.h, shared by every implementation, and every
+// one meets segments through the same exact test (common/ray_segment.h):
 //
-//   SeedRayCaster  (seed_ray_caster.h)  the seed's method, the reference: per-obstacle
-//                  minimum bounding circles culled against the scanner's circle.
-//   GridRayCaster  (grid_ray_caster.h)  the fast one: a uniform grid of segment lists,
-//                  walked cell by cell and skipping empty space; exact.
+//   SeedRayCaster   (seed_ray_caster.h)   the seed's method, the reference: per-obstacle
+//                   minimum bounding circles culled against the scanner's circle.
+//   SweepRayCaster  (sweep_ray_caster.h)  the fast one: per-cell lists of what lies
+//                   within rmax, swept over a scan's beams by angle.
+//   GridRayCaster   (grid_ray_caster.h)   rays walk a uniform grid of segments; memory
+//                   independent of rmax, the fallback of make_fast_ray_caster().
 //
-// Both give the same ranges (within 1e-6 m, tests/common/ray_caster_equivalence_test.cpp)
-// and are immutable after construction, so one instance serves any number of threads.
+// They give the same ranges (tests/common/ray_caster_equivalence_test.cpp: within 1e-6 m,
+// in practice bit for bit) and are immutable after construction, so one instance
+// serves any number of threads. bench/bench_raycast.cpp compares their speed.
+#include <cmath>
 #include <vector>
 
 #include "common/geometry.h"

@@ -12,7 +12,9 @@ void SeedRayCaster::cull(Point origin, std::vector<uint32_t>& kept) const {
   for (uint32_t k = 0; k < obstacles_.obstacles.size(); ++k) {
     const Circle& b = obstacles_.obstacles[k].bound;
     // Two circles meet when their centres are no farther apart than the radii's sum.
-    if (distance(origin, b.c) <= b.r + options_.rmax + kRayTolerance) kept.push_back(k);
+    const Point v = b.c - origin;
+    const double reach = b.r + options_.rmax + kRayTolerance;
+    if (dot(v, v) <= reach * reach) kept.push_back(k);
   }
 }
 

@@ -50,13 +50,18 @@ RobotRow RobotStore::read_robot(const mysqlpp::Row& r) {
 }
 
 std::vector<RobotRow> RobotStore::claim(const std::vector<std::string>& accounts, size_t limit) {
+  // One account at a time, in the order given (longest waiting first): a single
+  // "IN (...) ORDER BY id LIMIT n" would always prefer low robot ids and starve the
+  // others under load, and would keep every row it read locked, not only those it took.
   std::vector<RobotRow> out;
-  if (accounts.empty()) return out;
-  mysqlpp::Query q = c_.query();
-  q << "SELECT " << kRobotColumns << " FROM robots WHERE db_user IN (";
-  for (size_t i = 0; i < accounts.size(); ++i) q << (i ? "," : "") << mysqlpp::quote << accounts[i];
-  q << ") ORDER BY id LIMIT " << limit << " FOR UPDATE SKIP LOCKED";
-  for (const mysqlpp::Row& r : q.store()) out.push_back(read_robot(r));
+  for (const std::string& account : accounts) {
+    if (out.size() >= limit) break;
+    mysqlpp::Query q = c_.query();
+    q << "SELECT " << kRobotColumns << " FROM robots WHERE db_user = " << mysqlpp::quote << account
+      << " FOR UPDATE SKIP LOCKED";
+    mysqlpp::StoreQueryResult res = q.store();
+    if (!res.empty()) out.push_back(read_robot(res[0]));
+  }
   return out;
 }
 

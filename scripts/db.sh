@@ -104,8 +104,7 @@ start() {
     --port="$PORT" --bind-address=127.0.0.1 --skip-name-resolve \
     --pid-file="$PIDF" --log-error="$LOG" \
     --character-set-server=utf8mb4 --collation-server=utf8mb4_unicode_ci \
-    --max-allowed-packet=64M --innodb-buffer-pool-size=512M --innodb-log-file-size=256M \
-    --transaction-isolation=READ-COMMITTED >/dev/null 2>&1 &
+    --max-allowed-packet=64M --innodb-buffer-pool-size=512M --innodb-log-file-size=256M >/dev/null 2>&1 &
   local pid=$! i
   for i in $(seq 1 240); do
     running && break

@@ -10,7 +10,9 @@
 #include "server/cli_context.h"
 #include "server/exit_codes.h"
 #include "server/map_commands.h"
+#include "server/plan_command.h"
 #include "server/robot_commands.h"
+#include "server/topo_commands.h"
 #include "protocol/fleet_store.h"
 
 int main(int argc, char** argv) {
@@ -22,7 +24,9 @@ int main(int argc, char** argv) {
   ctx.add_connection_options(app);
   int code = exit_code::kOk;
   add_map_commands(app, ctx, &code);
+  add_plan_command(app, ctx, &code);
   add_robot_commands(app, ctx, &code);
+  add_topo_commands(app, ctx, &code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -66,9 +66,9 @@ void RequestLoop::run() {
         spdlog::warn("worker {}: connection lost ({}); reconnecting", worker_, e.what());
         conn_.reset();
       } else if (retryable(e)) {
-        spdlog::warn("worker {}: {} (error {}); looking for a robot that blocks, then retrying", worker_, e.what(),
-                     e.errnum());
-        end_blocking_robots();
+        // A lock wait timed out or a deadlock: the transaction was undone; go again (the
+        // stall guard ends a robot that keeps blocking us).
+        spdlog::warn("worker {}: {} (error {}); retrying", worker_, e.what(), e.errnum());
       } else {
         spdlog::error("worker {}: database error {}: {}", worker_, e.errnum(), e.what());
         std::this_thread::sleep_for(std::chrono::milliseconds(200));
@@ -215,29 +215,6 @@ size_t RequestLoop::mark_lost_robots() {
     ++lost;
   }
   return lost;
-}
-
-void RequestLoop::end_blocking_robots() {
-  // A robot's open transaction holding locks on sa (a SELECT ... FOR UPDATE or DELETE on
-  // sa_mine left open) blocks every insert into sa; no grant prevents it (SPEC 5.3).
-  try {
-    mysqlpp::Query q = conn_->query(
-        "SELECT t.trx_mysql_thread_id, p.USER, t.trx_started FROM information_schema.INNODB_TRX t"
-        " JOIN information_schema.PROCESSLIST p ON p.ID = t.trx_mysql_thread_id"
-        " WHERE t.trx_lock_structs > 0 AND p.USER IN (SELECT db_user FROM robots)");
-    for (const mysqlpp::Row& r : q.store()) {
-      const std::string thread = std::string(r[0]), user = std::string(r[1]);
-      try {
-        execute(*conn_, "KILL CONNECTION " + std::to_string(std::stoull(thread)));
-        spdlog::warn("ended connection {} of robot {}: its transaction (open since {}) held locks that blocked the server",
-                     thread, user, std::string(r[2]));
-      } catch (const mysqlpp::BadQuery& e) {
-        spdlog::warn("could not end connection {} of robot {}: {}", thread, user, e.what());
-      }
-    }
-  } catch (const mysqlpp::Exception& e) {
-    spdlog::error("looking for blocking robots failed: {}", e.what());
-  }
 }
 
 }  // namespace fleetmap

@@ -36,7 +36,6 @@ class RequestLoop {
  private:
   void connect_with_retry();
   void handle(RobotRow& robot, const Request& req, RequestQueue& queue, RobotStore& robots);
-  void end_blocking_robots();
 
   DbSettings db_;
   const ServerConfig& config_;

@@ -12,6 +12,7 @@
 #include "server/cli_context.h"
 #include "server/exit_codes.h"
 #include "server/request_loop.h"
+#include "server/stall_guard.h"
 
 namespace {
 std::atomic<bool> g_stop{false};
@@ -82,6 +83,7 @@ int main(int argc, char** argv) {
   std::vector<std::thread> workers;
   for (int i = 0; i < cfg.workers; ++i)
     workers.emplace_back([&, i] { RequestLoop(db, cfg, cache, g_stop, i, i == 0).run(); });
+  workers.emplace_back([&] { StallGuard(db, g_stop, std::chrono::milliseconds(250)).run(); });
   for (auto& t : workers) t.join();
   spdlog::info("fleetmap-server stopped");
   return exit_code::kOk;

@@ -6,13 +6,18 @@ CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_maps AS
   SELECT id, name, mx1, my1, mx4, my4, border, source, obstacles, segments, imported_at
   FROM maps;
 
+-- Views over a table with a SPATIAL INDEX read that table first (STRAIGHT_JOIN): when
+-- MariaDB 10.11 searches a spatial index after reading another table in the same
+-- statement it fails with ERROR 1207 "Update locks cannot be acquired during a READ
+-- UNCOMMITTED transaction" (MDEV-26123) -- exactly the inspector's MBRIntersects query.
+
 -- Map segments with their obstacle and geometry: what QGIS or ogrinfo reads.
 CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_segments AS
   SELECT s.id, m.name AS map, o.obstacle_id, o.st, o.semantic AS obstacle_semantic,
          s.ord, s.ax, s.ay, s.bx, s.`by`, s.h, s.in_out, s.semantic, s.note, s.geom
   FROM segments s
-  JOIN obstacles o ON o.map_id = s.map_id AND o.ord = s.obstacle_ord
-  JOIN maps m ON m.id = s.map_id;
+  STRAIGHT_JOIN obstacles o ON o.map_id = s.map_id AND o.ord = s.obstacle_ord
+  STRAIGHT_JOIN maps m ON m.id = s.map_id;
 
 CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_obstacles AS
   SELECT m.name AS map, o.ord, o.obstacle_id, o.st, o.semantic, o.cx, o.cy, o.r
@@ -34,7 +39,7 @@ CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_tasks AS
 -- Trajectories as points with timestamps.
 CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_trajectory_points AS
   SELECT tr.id, r.db_user AS robot, tr.t, tr.x, tr.y, tr.theta, tr.v, tr.w, tr.pos
-  FROM trajectories tr JOIN robots r ON r.id = tr.robot_id;
+  FROM trajectories tr STRAIGHT_JOIN robots r ON r.id = tr.robot_id;
 
 -- Protocol traffic (payloads shown by size; SELECT UNCOMPRESS on sa for the text).
 CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_requests AS
@@ -45,7 +50,7 @@ CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_answers AS
 -- Objects robots reported with SetObject, with who saw them and when.
 CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_observed_objects AS
   SELECT o.id, r.db_user AS robot, m.name AS map, o.t, o.x, o.y, o.object, o.pos
-  FROM observed_objects o JOIN robots r ON r.id = o.robot_id LEFT JOIN maps m ON m.id = o.map_id;
+  FROM observed_objects o STRAIGHT_JOIN robots r ON r.id = o.robot_id LEFT JOIN maps m ON m.id = o.map_id;
 
 CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_gps_fixes AS
   SELECT g.id, r.db_user AS robot, g.t, g.lat, g.lon, g.x, g.y

@@ -87,33 +87,41 @@ void ParticleFilter::update(const std::vector<double>& ranges, std::optional<dou
   if (poses_.empty()) throw std::logic_error("ParticleFilter::update: no particles (call init_global or init_pose)");
   const bool use_compass = compass && options_.compass_weight;
   const RayCaster& caster = *caster_;
-  log_likelihood_.resize(poses_.size());
-  parallel_for(options_.threads, poses_.size(), [&](int, size_t begin, size_t end) {
-    std::vector<double> synthetic(beams_.size());
-    for (size_t i = begin; i < end; ++i) {
-      const Pose& p = poses_[i];
-      caster.cast_scan(p.point(), p.theta, beams_, synthetic.data());
-      double ll = sensor_.log_weight(ranges.data(), synthetic.data(), beams_.size());
-      if (use_compass) ll += compass_.log_likelihood(p.theta, *compass);
-      log_likelihood_[i] = ll;
+  // Annealing (tempering_stages > 1): what a stage's phi leaves of the scan's exponent
+  // is applied by the next stage, after resampling and roughening, on new rays.
+  double budget = 1;
+  const int stages = std::max(1, options_.tempering_stages);
+  for (int stage = 0; stage < stages && budget > 1e-9; ++stage) {
+    log_likelihood_.resize(poses_.size());
+    parallel_for(options_.threads, poses_.size(), [&](int, size_t begin, size_t end) {
+      std::vector<double> synthetic(beams_.size());
+      for (size_t i = begin; i < end; ++i) {
+        const Pose& p = poses_[i];
+        caster.cast_scan(p.point(), p.theta, beams_, synthetic.data());
+        double ll = sensor_.log_weight(ranges.data(), synthetic.data(), beams_.size());
+        if (use_compass) ll += compass_.log_likelihood(p.theta, *compass);
+        log_likelihood_[i] = ll;
+      }
+    });
+    const double phi = choose_tempering(log_likelihood_, budget);
+    budget -= phi;
+    // seed 000 eq. (6): w(t) = w(t-1) * 1 / sum_j 1 / L(delta_j), as logarithms (to the
+    // power phi when tempered).
+    for (size_t i = 0; i < poses_.size(); ++i) weights_[i] = std::log(weights_[i]) + phi * log_likelihood_[i];
+    normalize_weights();
+    double sum_sq = 0;
+    for (double w : weights_) sum_sq += w * w;
+    if (1 / sum_sq < options_.resample_threshold * poses_.size()) {
+      resample();
+      roughen();
     }
-  });
-  last_phi_ = choose_tempering(log_likelihood_);
-  // seed 000 eq. (6): w(t) = w(t-1) * 1 / sum_j 1 / L(delta_j), as logarithms (to the
-  // power phi when tempered).
-  for (size_t i = 0; i < poses_.size(); ++i) weights_[i] = std::log(weights_[i]) + last_phi_ * log_likelihood_[i];
-  normalize_weights();
-  ++updates_;
-  double sum_sq = 0;
-  for (double w : weights_) sum_sq += w * w;
-  if (1 / sum_sq < options_.resample_threshold * poses_.size()) {
-    resample();
-    roughen();
   }
+  last_phi_ = 1 - budget;
+  ++updates_;
 }
 
-double ParticleFilter::choose_tempering(const std::vector<double>& ll) const {
-  if (!(options_.tempering_ess > 0)) return 1;
+double ParticleFilter::choose_tempering(const std::vector<double>& ll, double most) const {
+  if (!(options_.tempering_ess > 0)) return most;
   const size_t n = poses_.size();
   // Effective sample size of w(t-1) * L^phi.
   std::vector<double> lw(n);
@@ -133,8 +141,8 @@ double ParticleFilter::choose_tempering(const std::vector<double>& ll) const {
     return s * s / s2;
   };
   const double target = options_.tempering_ess * static_cast<double>(n);
-  if (ess(1.0) >= target || ess(0.0) < target) return 1;
-  double lo = 0, hi = 1;  // ess(lo) >= target > ess(hi)
+  if (ess(most) >= target || ess(0.0) < target) return most;
+  double lo = 0, hi = most;  // ess(lo) >= target > ess(hi)
   for (int k = 0; k < 30; ++k) {
     const double mid = (lo + hi) / 2;
     (ess(mid) >= target ? lo : hi) = mid;
@@ -210,7 +218,9 @@ void ParticleFilter::roughen() {
   const double r = std::min(1.0, std::hypot(m.cos_sum, m.sin_sum) / m.weight);
   const double spread_theta = r > 0 ? std::sqrt(-2 * std::log(r)) : kPi;
   const double scale = options_.roughening * std::pow(n, -1.0 / 3.0);
-  const double sx = scale * std::sqrt(vx / n), sy = scale * std::sqrt(vy / n), st = scale * spread_theta;
+  const double sx = std::min(options_.roughening_max_xy, scale * std::sqrt(vx / n));
+  const double sy = std::min(options_.roughening_max_xy, scale * std::sqrt(vy / n));
+  const double st = std::min(options_.roughening_max_theta, scale * spread_theta);
   parallel_for(options_.threads, poses_.size(), [&](int k, size_t begin, size_t end) {
     std::mt19937_64& rng = chunk_rngs_[k];
     std::normal_distribution<double> n01(0.0, 1.0);

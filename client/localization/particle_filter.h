@@ -59,7 +59,10 @@ struct ParticleFilterOptions {
   // Adaptive tempering: when a scan's likelihood would leave fewer than this share of
   // the particles effective, only its power phi < 1 is applied (0 disables).
   double tempering_ess = 0.0;
+  int tempering_stages = 1;         // passes per scan (new rays each) to spend phi up to 1
   double roughening = 0.2;          // K; 0 disables
+  double roughening_max_xy = 0.2;   // metres: caps of the jitter's standard deviation, so
+  double roughening_max_theta = deg2rad(1.0);  // a cloud of far hypotheses is not blurred
   bool adaptive = false;            // KLD sampling instead of a fixed NP
   KldOptions kld;
   double cluster_cell = 1.0;              // metres, for PoseEstimate::pose
@@ -114,10 +117,12 @@ class ParticleFilter {
   const RayCaster& ray_caster() const { return *caster_; }
   size_t updates() const { return updates_; }
   size_t resamplings() const { return resamplings_; }
-  double last_tempering() const { return last_phi_; }  // phi of the last update, 1 untempered
+  // Sum of the phi applied by the last update's stages: 1 when the scan counted in full.
+  double last_tempering() const { return last_phi_; }
 
  private:
-  double choose_tempering(const std::vector<double>& log_likelihood) const;
+  // The largest phi <= most that keeps tempering_ess of the particles effective.
+  double choose_tempering(const std::vector<double>& log_likelihood, double most) const;
   void normalize_weights();
   void resample();
   void roughen();

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <random>
 #include <string>
@@ -18,6 +19,7 @@
 #include "common/ramp.h"
 #include "common/seed_format.h"
 #include "common/seed_ray_caster.h"
+#include "common/sweep_ray_caster.h"
 
 namespace fleetmap {
 namespace {
@@ -100,55 +102,81 @@ Map without_specials(Map m) {
   return m;
 }
 
-// Random rays through both casters, single and in scans.
-Report compare(const Map& m, const RayCaster& seed, const RayCaster& fast, const RayCaster& plain, int rays,
-               int scans, unsigned rng_seed) {
-  Report rep;
-  const double rmax = seed.options().rmax;
+using Factory = std::function<std::unique_ptr<RayCaster>(const Map&, RayCasterOptions)>;
+struct Candidate {
+  std::string name;
+  Factory make;
+};
+
+Candidate fast() {
+  return {"fast", [](const Map& m, RayCasterOptions o) { return make_fast_ray_caster(m, o); }};
+}
+Candidate sweep(double cell) {
+  return {"sweep " + std::to_string(cell).substr(0, 4) + " m",
+          [cell](const Map& m, RayCasterOptions o) { return std::make_unique<SweepRayCaster>(m, o, SweepOptions{cell}); }};
+}
+Candidate grid(double cell, bool skip) {
+  return {"grid " + std::to_string(cell).substr(0, 4) + " m" + (skip ? "" : " no skip"),
+          [cell, skip](const Map& m, RayCasterOptions o) {
+            return std::make_unique<GridRayCaster>(m, o, GridOptions{cell, skip});
+          }};
+}
+
+// Random rays (single, then in scans of 131 beams over 180 degrees) through the seed's
+// caster and each candidate; every candidate must match the seed within kTolerance.
+void expect_equivalent(const std::string& name, const Map& m, double laser_height,
+                       const std::vector<Candidate>& candidates, int rays, double min_hit_share) {
+  const RayCasterOptions opt{laser_height, 15.0};
+  const SeedRayCaster seed(m, opt);
+  const auto plain = make_fast_ray_caster(without_specials(m), opt);
+  std::vector<std::unique_ptr<RayCaster>> casters;
+  for (const Candidate& c : candidates) casters.push_back(c.make(m, opt));
+  std::vector<Report> reps(casters.size());
+
   const Rect r = m.border.rect();
-  std::mt19937_64 rng(rng_seed);
+  std::mt19937_64 rng(42);
   std::uniform_real_distribution<double> ux(r.xmin, r.xmax), uy(r.ymin, r.ymax), ua(-kPi, kPi);
-  auto check = [&](Point o, double angle, double want, double got) {
+  auto check = [&](size_t k, Point o, double angle, double want, double got) {
+    Report& rep = reps[k];
     ++rep.rays;
-    if (got < rmax) ++rep.hits;
+    if (got < opt.rmax) ++rep.hits;
     const double diff = std::fabs(want - got);
     rep.worst = std::max(rep.worst, diff);
     if (!(diff <= kTolerance) && ++rep.mismatches <= 5)
-      ADD_FAILURE() << "origin (" << o.x << ", " << o.y << ") angle " << angle << ": seed " << want << ", fast "
-                    << got;
+      ADD_FAILURE() << name << " hL " << laser_height << ", " << candidates[k].name << ": origin (" << o.x << ", "
+                    << o.y << ") angle " << angle << ": seed " << want << ", got " << got;
   };
   for (int i = 0; i < rays; ++i) {
     const Point o{ux(rng), uy(rng)};
     const double a = ua(rng);
-    const double got = fast.cast(o, a);
-    check(o, a, seed.cast(o, a), got);
-    if (plain.cast(o, a) != got) ++rep.decided_by_special;
+    const double want = seed.cast(o, a);
+    const double without = plain->cast(o, a);
+    for (size_t k = 0; k < casters.size(); ++k) {
+      const double got = casters[k]->cast(o, a);
+      check(k, o, a, want, got);
+      if (without != got) ++reps[k].decided_by_special;
+    }
   }
   const std::vector<double> rel = evenly_spread_angles(131, kPi);
   std::vector<double> want(rel.size()), got(rel.size());
-  for (int i = 0; i < scans; ++i) {
+  for (int i = 0; i < kScans; ++i) {
     const Point o{ux(rng), uy(rng)};
     const double theta = ua(rng);
     seed.cast_scan(o, theta, rel, want.data());
-    fast.cast_scan(o, theta, rel, got.data());
-    for (size_t j = 0; j < rel.size(); ++j) check(o, theta + rel[j], want[j], got[j]);
+    for (size_t k = 0; k < casters.size(); ++k) {
+      casters[k]->cast_scan(o, theta, rel, got.data());
+      for (size_t j = 0; j < rel.size(); ++j) check(k, o, theta + rel[j], want[j], got[j]);
+    }
   }
-  return rep;
-}
-
-void expect_equivalent(const std::string& name, const Map& m, double laser_height, GridOptions grid, int rays,
-                       double min_hit_share) {
-  const RayCasterOptions opt{laser_height, 15.0};
-  const SeedRayCaster seed(m, opt);
-  const GridRayCaster fast(m, opt, grid);
-  const GridRayCaster plain(without_specials(m), opt, grid);
-  const Report rep = compare(m, seed, fast, plain, rays, kScans, 42);
-  const double share = static_cast<double>(rep.hits) / rep.rays;
-  std::printf("  %-19s hL %.1f cell %.2f%s: %d rays, %d hit (%.1f %%), %d by stairs/ramps, worst diff %.3g m\n",
-              name.c_str(), laser_height, grid.cell, grid.skip_empty ? "" : " (no skip)", rep.rays, rep.hits,
-              100 * share, rep.decided_by_special, rep.worst);
-  EXPECT_EQ(rep.mismatches, 0) << name << " hL " << laser_height;
-  EXPECT_GE(share, min_hit_share) << name << " hL " << laser_height << ": too few rays hit to compare";
+  for (size_t k = 0; k < casters.size(); ++k) {
+    const Report& rep = reps[k];
+    const double share = static_cast<double>(rep.hits) / rep.rays;
+    std::printf("  %-19s hL %.1f %-15s: %d rays, %d hit (%.1f %%), %d by stairs/ramps, worst diff %.3g m\n",
+                name.c_str(), laser_height, candidates[k].name.c_str(), rep.rays, rep.hits, 100 * share,
+                rep.decided_by_special, rep.worst);
+    EXPECT_EQ(rep.mismatches, 0) << name << " hL " << laser_height << " " << candidates[k].name;
+    EXPECT_GE(share, min_hit_share) << name << " hL " << laser_height << ": too few rays hit to compare";
+  }
 }
 
 const Map& campus() {
@@ -161,33 +189,30 @@ const Map& gdc1() {
 }
 
 TEST(RayCasterEquivalence, RealMapsAsImported) {
-  expect_equivalent("UT_Campus", campus(), 0.3, {}, kRays, 0.1);
-  expect_equivalent("GDC1", gdc1(), 0.3, {}, kRays, 0.5);
+  expect_equivalent("UT_Campus", campus(), 0.3, {fast(), grid(1, true)}, kRays, 0.1);
+  expect_equivalent("GDC1", gdc1(), 0.3, {fast(), grid(1, true)}, kRays, 0.5);
 }
 
 TEST(RayCasterEquivalence, RealMapsWithHeightsStairsAndRamps) {
   const Map c = varied(campus(), 1), g = varied(gdc1(), 2);
   for (double hl : {0.1, 0.3, 1.0, 3.0}) {
-    expect_equivalent("UT_Campus (varied)", c, hl, {}, kRays, 0.03);
-    expect_equivalent("GDC1 (varied)", g, hl, {}, kRays, 0.2);
+    expect_equivalent("UT_Campus (varied)", c, hl, {fast(), grid(1, true)}, kRays, 0.03);
+    expect_equivalent("GDC1 (varied)", g, hl, {fast(), grid(1, true)}, kRays, 0.2);
   }
 }
 
 TEST(RayCasterEquivalence, ExampleMap) {
   const Map m = read_seed_file(kExample);
-  for (double hl : {0.1, 0.3, 1.0, 3.0}) expect_equivalent("example-campus", m, hl, {}, kRays, 0.2);
+  for (double hl : {0.1, 0.3, 1.0, 3.0}) expect_equivalent("example-campus", m, hl, {fast(), grid(1, true)}, kRays, 0.2);
   // A window cuts the stairs and the ramp (SPEC 5.4): open outlines, a lost closing.
   const Map w = clip_map(m, window_rect(m.border, {28, 15}, 38, 12));
-  for (double hl : {0.1, 0.3}) expect_equivalent("example window", w, hl, {}, kRays, 0.1);
+  for (double hl : {0.1, 0.3}) expect_equivalent("example window", w, hl, {fast(), grid(1, true)}, kRays, 0.1);
 }
 
-TEST(RayCasterEquivalence, OtherGridSettings) {
-  const Map c = varied(campus(), 3);
-  const Map e = read_seed_file(kExample);
-  for (GridOptions g : {GridOptions{1.0, false}, GridOptions{0.25, true}, GridOptions{4.0, true}}) {
-    expect_equivalent("UT_Campus (varied)", c, 0.3, g, kRays / 5, 0.03);
-    expect_equivalent("example-campus", e, 0.3, g, kRays / 5, 0.2);
-  }
+TEST(RayCasterEquivalence, OtherCellSizes) {
+  const std::vector<Candidate> others = {grid(1, false), grid(0.25, true), grid(4, true), sweep(0.25), sweep(4)};
+  expect_equivalent("UT_Campus (varied)", varied(campus(), 3), 0.3, others, kRays / 5, 0.03);
+  expect_equivalent("example-campus", read_seed_file(kExample), 0.3, others, kRays / 5, 0.2);
 }
 
 }  // namespace

@@ -1,0 +1,187 @@
+#!/usr/bin/env bash
+# Server load benchmark on its own private MariaDB (<build>/benchsrv, port 33318):
+# fleetmap-loadgen plays N robots (own account and connection each, plain SQL), first
+# against a minimal answering loop (the floor: the bare database path), then against the
+# real fleetmap-server, in the same run; then the servers' idle polling cost, then scaling.
+#
+#   scripts/bench-server.sh [options]
+#     --robots N          fleet size of phases 1-2 (default 200)
+#     --seconds S         measurement window of phases 1-2 (default 20)
+#     --scaling "LIST"    robot counts of phase 4 (default "200 400 600 1000")
+#     --scaling-seconds S window of each phase-4 run (default 12)
+#     --procs "LIST"      server processes in phase 4 (default "1 2")
+#     --idle-seconds S    no-traffic window of phase 3 (default 10)
+#     --polls "LIST"      --poll-max-ms values of phase 3 (default "1 10 50")
+#     --threads T         loadgen client threads (default 8)
+#     --phases "LIST"     any of floor server idle scaling (default all four)
+#     --server-flags "F"  extra flags for every fleetmap-server (e.g. "--workers 4")
+#     --long              longer windows: --seconds 60 --scaling-seconds 40 --idle-seconds 30
+#     --no-build          use the binaries in the build folder as they are
+# Environment: FLEETMAP_BUILD_DIR (default build), FLEETMAP_BENCH_PORT (default 33318).
+# Results: <build>/benchsrv/results-<time>.jsonl (one JSON line per run), tables at the end.
+# Robot accounts lg0001... are created once with `fleetmap robot add` and reused.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD="${FLEETMAP_BUILD_DIR:-build}"
+BIN="$BUILD/bin"
+
+ROBOTS=200 SECONDS_=20 SCALING="200 400 600 1000" SCALING_SECONDS=12 PROCS="1 2" IDLE_SECONDS=10
+POLLS="1 10 50" THREADS=8 PHASES="floor server idle scaling" SERVER_FLAGS="" BUILD_FIRST=1
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --robots) ROBOTS="$2"; shift 2 ;;
+    --seconds) SECONDS_="$2"; shift 2 ;;
+    --scaling) SCALING="$2"; shift 2 ;;
+    --scaling-seconds) SCALING_SECONDS="$2"; shift 2 ;;
+    --procs) PROCS="$2"; shift 2 ;;
+    --idle-seconds) IDLE_SECONDS="$2"; shift 2 ;;
+    --polls) POLLS="$2"; shift 2 ;;
+    --threads) THREADS="$2"; shift 2 ;;
+    --phases) PHASES="$2"; shift 2 ;;
+    --server-flags) SERVER_FLAGS="$2"; shift 2 ;;
+    --long) SECONDS_=60; SCALING_SECONDS=40; IDLE_SECONDS=30; shift ;;
+    --no-build) BUILD_FIRST=0; shift ;;
+    -h|--help) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "bench-server: unknown option '$1' (--help)" >&2; exit 64 ;;
+  esac
+done
+has_phase() { case " $PHASES " in *" $1 "*) return 0 ;; *) return 1 ;; esac; }
+
+if [ "$BUILD_FIRST" = 1 ]; then
+  cmake --build "$BUILD" -j2 --target fleetmap fleetmap-server fleetmap-loadgen >/dev/null
+fi
+for b in fleetmap fleetmap-server fleetmap-loadgen; do
+  [ -x "$BIN/$b" ] || { echo "bench-server: $BIN/$b missing; build it (cmake --build $BUILD --target $b)" >&2; exit 1; }
+done
+
+export FLEETMAP_HOME="$PWD/$BUILD/benchsrv" FLEETMAP_PORT="${FLEETMAP_BENCH_PORT:-33318}"
+unset FLEETMAP_CONFIG FLEETMAP_HOST FLEETMAP_SOCKET FLEETMAP_DB FLEETMAP_USER FLEETMAP_PASSWORD
+SERVER_PIDS=()
+stop_servers() {
+  local p
+  for p in "${SERVER_PIDS[@]}"; do kill -TERM "$p" 2>/dev/null || true; done
+  for p in "${SERVER_PIDS[@]}"; do wait "$p" 2>/dev/null || true; done
+  SERVER_PIDS=()
+}
+cleanup() { stop_servers; bash scripts/db.sh stop >/dev/null || true; }
+trap cleanup EXIT
+T_START=$(date +%s)
+bash scripts/db.sh start
+DB_PID="$(cat "$FLEETMAP_HOME/mysqld.pid")"
+sql() { bash scripts/db.sh sql -N -e "$1"; }
+
+# One connection per robot, plus servers and tools. max_connections is dynamic; the
+# open-files limit was set at start (db.sh) and bounds it.
+MAXC=$(( $(echo $SCALING $ROBOTS | tr ' ' '\n' | sort -n | tail -1) + 200 ))
+sql "SET GLOBAL max_connections = $MAXC"
+echo "bench-server: max_connections $MAXC, open_files_limit $(sql "SELECT @@open_files_limit")," \
+     "innodb_flush_log_at_trx_commit $(sql "SELECT @@innodb_flush_log_at_trx_commit")"
+
+if ! "$BIN/fleetmap" map list | grep -qw UT_Campus; then
+  "$BIN/fleetmap" map import maps/amrl/UT_Campus.vectormap.txt --name UT_Campus
+fi
+
+# Robot accounts lg0001..lgNNNN: reuse those that exist with their password file.
+NEED=$(echo $SCALING $ROBOTS | tr ' ' '\n' | sort -n | tail -1)
+has_phase scaling || NEED=$ROBOTS
+PWDIR="$FLEETMAP_HOME/robots"
+mkdir -p "$PWDIR"; chmod 700 "$PWDIR"
+declare -A EXISTS=()
+for name in $("$BIN/fleetmap" robot list | awk 'NR > 1 { print $2 }'); do EXISTS[$name]=1; done
+T0=$(date +%s); MISSING=()
+for i in $(seq 1 "$NEED"); do
+  printf -v name 'lg%04d' "$i"
+  if [ -n "${EXISTS[$name]:-}" ]; then
+    [ -s "$PWDIR/$name.pw" ] && continue
+    # An account whose password file is gone is made again with a new password.
+    "$BIN/fleetmap" robot remove "$name" >/dev/null
+  fi
+  (umask 077; head -c 18 /dev/urandom | base64 | tr -d '/+=' > "$PWDIR/$name.pw")
+  MISSING+=("$name")
+done
+if [ ${#MISSING[@]} -gt 0 ]; then
+  echo "bench-server: creating ${#MISSING[@]} robot accounts with fleetmap robot add (once; reused later) ..."
+  printf '%s\n' "${MISSING[@]}" | xargs -P 4 -I{} "$BIN/fleetmap" robot add {} --map UT_Campus \
+    --password-file "$PWDIR/{}.pw" >/dev/null
+fi
+ADDED=${#MISSING[@]}
+echo "bench-server: $NEED robot accounts ready ($ADDED added in $(( $(date +%s) - T0 )) s)"
+
+RES="$FLEETMAP_HOME/results-$(date +%Y%m%d-%H%M%S).jsonl"
+: > "$RES"
+LG=("$BIN/fleetmap-loadgen" --password-dir "$PWDIR" --map UT_Campus --results "$RES" --db-pid "$DB_PID"
+    --threads "$THREADS")
+WORKERS=$( "$BIN/fleetmap-server" --check $SERVER_FLAGS | sed -n 's/.*, \([0-9]*\) workers.*/\1/p' )
+
+# Undelivered traffic of an earlier run must not be the next run's load.
+clear_mailboxes() { sql "DELETE FROM rr; DELETE FROM sa"; }
+
+start_servers() {  # PROCS [flags...]
+  local n="$1" i; shift
+  clear_mailboxes
+  for i in $(seq 1 "$n"); do
+    # shellcheck disable=SC2086
+    "$BIN/fleetmap-server" --log-level warn $SERVER_FLAGS "$@" >>"$FLEETMAP_HOME/server-$i.log" 2>&1 &
+    SERVER_PIDS+=($!)
+  done
+  sleep 1
+  for i in "${SERVER_PIDS[@]}"; do kill -0 "$i" || { echo "bench-server: fleetmap-server exited, see $FLEETMAP_HOME/server-*.log" >&2; exit 1; }; done
+}
+pids() { local IFS=,; echo "${SERVER_PIDS[*]}"; }
+worst_p99() { awk '/worst answered p99/ { print $(NF-1) }' "$1"; }
+run_lg() {  # LOG ARGS...: a loadgen run, its output shown and kept
+  local log="$1"; shift
+  "${LG[@]}" "$@" | tee "$log"
+}
+LOG="$FLEETMAP_HOME/last-run.txt"
+
+if has_phase floor; then
+  printf '\n######## 1. floor\n'
+  clear_mailboxes
+  run_lg "$LOG" --mode floor --workload lone --phase floor --label "lone robot"
+  clear_mailboxes
+  run_lg "$LOG" --mode floor --robots "$ROBOTS" --seconds "$SECONDS_" --phase floor --label "$ROBOTS robots"
+fi
+
+if has_phase server; then
+  printf '\n######## 2. server (1 process, %s workers)\n' "$WORKERS"
+  start_servers 1
+  run_lg "$LOG" --mode server --robots "$ROBOTS" --seconds "$SECONDS_" --phase server --label "$ROBOTS robots" \
+    --server-pid "$(pids)" --server-procs 1 --workers "$WORKERS"
+  stop_servers
+fi
+
+if has_phase idle; then
+  printf '\n######## 3. idle polling cost and lone requests\n'
+  for pm in $POLLS; do
+    start_servers 1 --poll-max-ms "$pm"
+    sleep 1
+    run_lg "$LOG" --mode idle --seconds "$IDLE_SECONDS" --phase idle --label "poll-max-ms $pm" --poll-max-ms "$pm" \
+      --server-pid "$(pids)" --server-procs 1 --workers "$WORKERS"
+    stop_servers
+  done
+fi
+
+if has_phase scaling; then
+  printf '\n######## 4. scaling\n'
+  for n in $SCALING; do
+    clear_mailboxes
+    run_lg "$LOG" --mode floor --robots "$n" --seconds "$SCALING_SECONDS" --phase scaling --label "floor $n"
+  done
+  for procs in $PROCS; do
+    for n in $SCALING; do
+      start_servers "$procs"
+      run_lg "$LOG" --mode server --robots "$n" --seconds "$SCALING_SECONDS" --phase scaling \
+        --label "$procs proc $n robots" --server-pid "$(pids)" --server-procs "$procs" --workers "$WORKERS"
+      stop_servers
+      p99="$(worst_p99 "$LOG")"
+      if [ -z "$p99" ] || awk -v p="$p99" 'BEGIN { exit !(p > 20) }'; then
+        echo "bench-server: p99 ${p99:-?} ms > 20 ms at $n robots with $procs process(es); larger fleets skipped"
+        break
+      fi
+    done
+  done
+fi
+
+printf '\n######## summary (%s; all figures from this run, %d s)\n' "$RES" $(( $(date +%s) - T_START ))
+"$BIN/fleetmap-loadgen" --mode report --results "$RES"

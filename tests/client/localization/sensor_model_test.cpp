@@ -1,0 +1,91 @@
+// SensorModel (client/localization/sensor_model.h) against numbers computed by hand from
+// seed 000 eq. (5)-(6) with the seed's parameters: alpha 1, beta 0.1, sigma_m 0.5 m,
+// RMAX 15 m. N peak = 1 / (sqrt(2 pi) 0.5) = 0.79788456..., uniform = 0.1 / 15.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "client/localization/sensor_model.h"
+
+namespace fleetmap::localization {
+namespace {
+
+constexpr double kPeak = 0.79788456080286541;  // 1 / (sqrt(2 pi) * 0.5)
+constexpr double kUniform = 0.1 / 15;
+
+TEST(SensorModel, BeamLikelihoodMatchesEquation5) {
+  const SensorModel m;
+  // delta = 0: both terms, the normal at its peak.
+  EXPECT_NEAR(m.likelihood(0.0), 0.8045512274695321, 1e-12);
+  EXPECT_NEAR(m.likelihood(0.0), kPeak + kUniform, 1e-12);
+  // Measured longer than synthetic (delta > 0): the normal term only.
+  EXPECT_NEAR(m.likelihood(0.5), 0.48394144903828673, 1e-12);
+  EXPECT_NEAR(m.likelihood(3.0), 1.2151765699646572e-08, 1e-20);
+  // Measured shorter (an unmodelled obstacle): the uniform term adds 0.1 / 15.
+  EXPECT_NEAR(m.likelihood(-0.5), 0.4906081157049534, 1e-12);
+  EXPECT_NEAR(m.likelihood(-1.0), 0.1146485996930428, 1e-12);
+  EXPECT_NEAR(m.likelihood(-3.0), 0.006666678818432367, 1e-15);
+  // Beyond -RMAX the uniform is 0 again.
+  EXPECT_LT(m.likelihood(-16.0), 1e-200);
+}
+
+TEST(SensorModel, UniformTermFloorsShortReadingsOnly) {
+  const SensorModel m;
+  for (double d = -15.0; d <= -4.0; d += 0.5) EXPECT_NEAR(m.likelihood(d), kUniform, 1e-12) << d;
+  for (double d = 4.0; d <= 15.0; d += 0.5) EXPECT_LT(m.likelihood(d), 1e-12) << d;
+}
+
+TEST(SensorModel, LogLikelihoodIsExactWhereTheLikelihoodUnderflows) {
+  const SensorModel m;
+  for (double d : {-3.0, -1.0, -0.5, 0.0, 0.5, 3.0}) EXPECT_NEAR(m.log_likelihood(d), std::log(m.likelihood(d)), 1e-12);
+  // exp(-800) underflows; its logarithm does not.
+  EXPECT_NEAR(m.log_likelihood(20.0), std::log(kPeak) - 800, 1e-9);
+  EXPECT_NEAR(m.log_likelihood(-16.0), std::log(kPeak) - 512, 1e-9);
+}
+
+TEST(SensorModel, WeightIsInverseOfSumOfInverses) {
+  const SensorModel m;
+  // seed 000 eq. (6) for deltas {0, -1}: 1 / (1 / 0.80455 + 1 / 0.11465).
+  const std::vector<double> measured{5.0, 4.0}, synthetic{5.0, 5.0};
+  EXPECT_NEAR(std::exp(m.log_weight(measured.data(), synthetic.data(), 2)), 0.10034887832326189, 1e-12);
+  // Three beams, deltas {0, -1, +0.5}.
+  const std::vector<double> m3{5.0, 4.0, 2.5}, s3{5.0, 5.0, 2.0};
+  EXPECT_NEAR(std::exp(m.log_weight(m3.data(), s3.data(), 3)), 0.0831144711986241, 1e-12);
+}
+
+TEST(SensorModel, ProductCombination) {
+  SensorModelOptions o;
+  o.combination = BeamCombination::Product;
+  const SensorModel m(o);
+  const std::vector<double> m3{5.0, 4.0, 2.5}, s3{5.0, 5.0, 2.0};
+  EXPECT_NEAR(std::exp(m.log_weight(m3.data(), s3.data(), 3)), 0.04463908427954721, 1e-12);
+}
+
+TEST(SensorModel, HarmonicWeightFallsBackToLogsWithoutLosingPrecision) {
+  SensorModelOptions o;
+  o.sigma_m = 0.1;  // exponent (15 m)^2 / (2 * 0.01) = 11250: 1 / L overflows a double
+  const SensorModel m(o);
+  const std::vector<double> measured{15.0, 5.0}, synthetic{0.0, 5.0};
+  const double lw = m.log_weight(measured.data(), synthetic.data(), 2);
+  // One beam's 1 / L dominates: log w = log L(15) - log(1 + L(15) / L(0)) ~ log L(15).
+  EXPECT_TRUE(std::isfinite(lw));
+  EXPECT_NEAR(lw, m.log_likelihood(15.0), 1e-9);
+}
+
+TEST(SensorModel, RejectsMeaninglessParameters) {
+  SensorModelOptions o;
+  o.sigma_m = 0;
+  EXPECT_THROW(SensorModel{o}, std::invalid_argument);
+  o = {};
+  o.alpha = 0;
+  o.beta = 0;
+  EXPECT_THROW(SensorModel{o}, std::invalid_argument);
+  o = {};
+  o.rmax = -1;
+  EXPECT_THROW(SensorModel{o}, std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace fleetmap::localization
