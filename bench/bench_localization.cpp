@@ -1,6 +1,8 @@
 // Onboard localization benchmark (SPEC 6, 8; seed 000 section 4.1): the particle filter
 // with the seed's parameters (NP 6000, NL 131 over 180 degrees, RMAX 15 m, sigma_L 5 cm,
-// alpha 1, beta 0.1, sigma_m 0.5 m, compass +-3 degrees) on real maps, simulated sensors.
+// alpha 1, beta 0.1, sigma_m 0.5 m, compass +-3 degrees) on real maps, simulated sensors,
+// in two configurations: `seed` (eq. 5-6 as written, ParticleFilterOptions::seed_model)
+// and `robust` (ParticleFilterOptions::robust: beam product with a floor, tempering).
 //
 //  1. global localization: from a compass-only prior, the share of trials whose estimate
 //     is within 0.3 m and 3 degrees after at most 10 updates (the robot wandering 0.5 m
@@ -37,7 +39,7 @@ using namespace fleetmap::localization;
 using Clock = std::chrono::steady_clock;
 
 struct Settings {
-  ParticleFilterOptions filter;
+  ParticleFilterOptions filter;  // the configuration under test
   LaserSimulatorOptions laser;
   int trials = 100;
   int updates = 10;
@@ -181,30 +183,24 @@ double percentile(std::vector<int> v, double q) {
   return v[std::min(v.size() - 1, static_cast<size_t>(q * v.size()))];
 }
 
-void bench_map(const std::string& path, const Settings& s, bool skip_global, bool skip_tracking) {
-  const bool amrl = path.ends_with(".vectormap.txt");
-  const Map map = amrl ? read_amrl_file(path, AmrlOptions{}) : read_seed_file(path);
-  const Rect r = map.border.rect();
-  std::shared_ptr<const RayCaster> world = std::make_shared<GridRayCaster>(map, s.filter.laser);
-  std::printf("\n== %s: %zu segments, border %.0f x %.0f m (%.0f m2); NP %zu, NL %d, RMAX %.0f m, sigma_L %.2f m, "
-              "alpha %.2g, beta %.2g, sigma_m %.2g m, eq. (6) %s, %d threads\n",
-              path.c_str(), map.segment_count(), r.xmax - r.xmin, r.ymax - r.ymin, (r.xmax - r.xmin) * (r.ymax - r.ymin),
-              s.filter.particles, s.filter.beams, s.filter.laser.rmax, s.laser.sigma, s.filter.sensor.alpha,
-              s.filter.sensor.beta, s.filter.sensor.sigma_m,
-              s.filter.sensor.combination == BeamCombination::Harmonic ? "harmonic (seed)" : "product", s.filter.threads);
-  std::fflush(stdout);
+const char* describe(const ParticleFilterOptions& f) {
+  return f.sensor.combination == BeamCombination::Harmonic ? "eq. (6) harmonic" : "beam product";
+}
 
+void bench_config(const Map& map, std::shared_ptr<const RayCaster> world, const Settings& s, const char* name,
+                  bool skip_global, bool skip_tracking) {
+  const ParticleFilterOptions& f = s.filter;
+  std::printf("-- %s: %s, gamma %.2g, tempering ESS %.2g x %d stages, init density %.2g /m2, roughening %.2g\n", name,
+              describe(f), f.sensor.gamma, f.tempering_ess, f.tempering_stages, f.global_density, f.roughening);
+  std::fflush(stdout);
   if (!skip_global) {
     const GlobalResult g = run_global(map, world, s);
-    double mean_err = 0;
-    for (double e : g.final_error) mean_err += e;
     std::vector<double> errs = g.final_error;
     std::sort(errs.begin(), errs.end());
     std::printf("global localization, %d trials (%d people/scan): %.1f %% within 0.3 m and 3 deg after <= %d updates "
                 "(goal >= 95 %%); first within at update median %.0f, p90 %.0f; final error median %.2f m; %.1f s\n",
                 g.trials, s.laser.people, 100.0 * g.converged / std::max(1, g.trials), s.updates,
                 percentile(g.first_within, 0.5), percentile(g.first_within, 0.9), errs[errs.size() / 2], g.seconds);
-    std::printf("  seed 000 Fig. 5: one simulated run, 10 000 m2, converged in 4 iterations (no success rate given)\n");
     std::fflush(stdout);
   }
   if (!skip_tracking) {
@@ -212,21 +208,46 @@ void bench_map(const std::string& path, const Settings& s, bool skip_global, boo
       const TrackResult t = run_tracking(map, world, s, adaptive);
       std::printf("tracking %s, %.0f m, %d updates: RMS %.3f m (goal < 0.10 m), max %.3f m, RMS heading %.2f deg, "
                   "mean %.0f particles, %.1f Hz\n",
-                  adaptive ? "KLD adaptive" : "fixed NP   ", t.driven, t.updates, t.rms, t.max, rad2deg(t.rms_theta),
+                  adaptive ? "KLD adaptive" : "fixed NP    ", t.driven, t.updates, t.rms, t.max, rad2deg(t.rms_theta),
                   t.mean_particles, t.updates / t.seconds);
       if (!adaptive)
-        std::printf("  baseline dead reckoning, same odometry: RMS %.3f m, final %.3f m\n", t.dead_reckoning_rms,
-                    t.dead_reckoning_final);
+        std::printf("  baseline: dead reckoning on the same odometry: RMS %.3f m, final %.3f m\n",
+                    t.dead_reckoning_rms, t.dead_reckoning_final);
       std::fflush(stdout);
     }
   }
-  const double fast = update_seconds(map, world, world, s, s.filter.particles, 7);
+}
+
+void bench_map(const std::string& path, const Settings& base, const std::vector<std::string>& configs,
+               bool skip_global, bool skip_tracking) {
+  const bool amrl = path.ends_with(".vectormap.txt");
+  const Map map = amrl ? read_amrl_file(path, AmrlOptions{}) : read_seed_file(path);
+  const Rect r = map.border.rect();
+  std::shared_ptr<const RayCaster> world = std::make_shared<GridRayCaster>(map, base.filter.laser);
+  std::printf("\n== %s: %zu segments, border %.0f x %.0f m (%.0f m2); NP %zu, NL %d, RMAX %.0f m, sigma_L %.2f m, "
+              "alpha %.2g, beta %.2g, sigma_m %.2g m, %d threads\n",
+              path.c_str(), map.segment_count(), r.xmax - r.xmin, r.ymax - r.ymin, (r.xmax - r.xmin) * (r.ymax - r.ymin),
+              base.filter.particles, base.filter.beams, base.filter.laser.rmax, base.laser.sigma,
+              base.filter.sensor.alpha, base.filter.sensor.beta, base.filter.sensor.sigma_m, base.filter.threads);
+  std::printf("seed 000 Fig. 5 (the figure to compare with): one simulated run on 10 000 m2, converged in 4 "
+              "iterations; no success rate, tracking error or rate given\n");
+  for (const std::string& c : configs) {
+    Settings s = base;
+    s.filter = c == "seed" ? ParticleFilterOptions::seed_model() : ParticleFilterOptions::robust();
+    s.filter.particles = base.filter.particles;
+    s.filter.threads = base.filter.threads;
+    s.filter.kld.max_particles = base.filter.particles;
+    bench_config(map, world, s, c.c_str(), skip_global, skip_tracking);
+  }
+  const double fast = update_seconds(map, world, world, base, base.filter.particles, 7);
   const size_t seed_particles = 300;
-  auto seed_caster = std::make_shared<SeedRayCaster>(map, s.filter.laser);
-  const double seed = update_seconds(map, seed_caster, world, s, seed_particles, 3) * s.filter.particles / seed_particles;
-  std::printf("update rate, NP %zu x NL %d, global cloud: %.1f Hz (%.1f ms); seed's bounding-circle caster: %.2f Hz "
-              "(timed on %zu particles, scaled)\n",
-              s.filter.particles, s.filter.beams, 1 / fast, 1e3 * fast, 1 / seed, seed_particles);
+  auto seed_caster = std::make_shared<SeedRayCaster>(map, base.filter.laser);
+  const double seed =
+      update_seconds(map, seed_caster, world, base, seed_particles, 3) * base.filter.particles / seed_particles;
+  std::printf("update rate, NP %zu x NL %d on %d threads, global cloud: %.1f Hz (%.1f ms); baseline, the seed's "
+              "bounding-circle caster: %.2f Hz (timed on %zu particles, scaled)\n",
+              base.filter.particles, base.filter.beams, base.filter.threads, 1 / fast, 1e3 * fast, 1 / seed,
+              seed_particles);
 }
 
 }  // namespace
@@ -235,7 +256,7 @@ int main(int argc, char** argv) {
   CLI::App app{"bench-localization: particle filter global localization, tracking and update rate (seed 000 4.1)"};
   std::vector<std::string> maps;
   Settings s;
-  std::string combination = "harmonic";
+  std::string config = "both";
   bool skip_global = false, skip_tracking = false;
   app.add_option("--map", maps, "maps (AMRL .vectormap.txt or seed .map); default GDC1 and UT_Campus");
   app.add_option("--trials", s.trials, "global localization trials per map")->capture_default_str();
@@ -245,18 +266,18 @@ int main(int argc, char** argv) {
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_option("--threads", s.filter.threads, "filter threads")->capture_default_str();
-  app.add_option("--roughening", s.filter.roughening, "K of the roughening")->capture_default_str();
-  app.add_option("--sigma-m", s.filter.sensor.sigma_m, "metres")->capture_default_str();
-  app.add_option("--combination", combination, "harmonic (seed eq. 6) or product")->capture_default_str();
+  app.add_option("--config", config, "seed, robust or both")->capture_default_str();
   app.add_flag("--skip-global", skip_global);
   app.add_flag("--skip-tracking", skip_tracking);
   CLI11_PARSE(app, argc, argv);
-  if (combination == "product") s.filter.sensor.combination = BeamCombination::Product;
-  else if (combination != "harmonic") {
-    std::fprintf(stderr, "--combination: expected harmonic or product, got %s\n", combination.c_str());
+  std::vector<std::string> configs;
+  if (config == "both") configs = {"seed", "robust"};
+  else if (config == "seed" || config == "robust") configs = {config};
+  else {
+    std::fprintf(stderr, "--config: expected seed, robust or both, got %s\n", config.c_str());
     return 2;
   }
   if (maps.empty()) maps = {"maps/amrl/GDC1.vectormap.txt", "maps/amrl/UT_Campus.vectormap.txt"};
-  for (const std::string& m : maps) bench_map(m, s, skip_global, skip_tracking);
+  for (const std::string& m : maps) bench_map(m, s, configs, skip_global, skip_tracking);
   return 0;
 }

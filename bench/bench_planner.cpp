@@ -108,6 +108,7 @@ int main(int argc, char** argv) {
   std::printf("%zu pairs joined by A* out of %zu clear random pairs\n", pairs.size(), tried);
 
   std::vector<double> plan_ms, rrt_ms, astar_ms, ratio, ratio_shortcut, raw_ratio;
+  std::vector<double> plan_ms_bent, ratio_bent;  // pairs that no straight segment joins
   size_t failed = 0, rounded = 0, corners = 0, rrt_vertices = 0;
   double worst = 0;
   SvgOptions svg;
@@ -134,13 +135,19 @@ int main(int argc, char** argv) {
     ratio.push_back(r.length / q.astar_length);
     ratio_shortcut.push_back(r.length / q.astar_shortcut_length);
     raw_ratio.push_back(path_length(r.raw) / q.astar_length);
+    if (r.raw.size() > 2) {
+      plan_ms_bent.push_back(1e3 * r.seconds);
+      ratio_bent.push_back(r.length / q.astar_length);
+    }
     rounded += r.smoothing.rounded;
     corners += r.smoothing.corners;
     rrt_vertices += r.rrt.start_tree + r.rrt.goal_tree;
   }
   const size_t found = pairs.size() - failed;
-  std::printf("RRT-Connect found %zu of %zu (%zu failed), %.0f tree vertices on average; %zu of %zu corners rounded\n\n",
+  std::printf("RRT-Connect found %zu of %zu (%zu failed), %.0f tree vertices on average; %zu of %zu corners rounded\n",
               found, pairs.size(), failed, found ? double(rrt_vertices) / found : 0.0, rounded, corners);
+  std::printf("%zu pairs are joined by a straight segment (no search), %zu need one\n\n", found - plan_ms_bent.size(),
+              plan_ms_bent.size());
   std::printf("%-46s %10s %10s %10s\n", "", "median", "p95", "max");
   auto row = [](const char* name, const std::vector<double>& v, const char* unit) {
     std::printf("%-46s %10.3f %10.3f %10.3f %s\n", name, quantile(v, 0.5), quantile(v, 0.95), quantile(v, 1.0), unit);
@@ -148,9 +155,11 @@ int main(int argc, char** argv) {
   row("time: RRT-Connect + smoothing", plan_ms, "ms");
   row("time: RRT-Connect alone", rrt_ms, "ms");
   row("time: grid A* (baseline, same pairs)", astar_ms, "ms");
+  row("time: RRT-Connect + smoothing, no straight line", plan_ms_bent, "ms");
   row("length: smoothed / A*", ratio, "");
   row("length: smoothed / A* shortcut", ratio_shortcut, "");
   row("length: raw RRT / A*", raw_ratio, "");
+  row("length: smoothed / A*, no straight line", ratio_bent, "");
   if (!svg_worst.empty()) {
     std::FILE* f = std::fopen(svg_worst.c_str(), "wb");
     const std::string text = write_svg(map, svg);

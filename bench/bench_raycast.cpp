@@ -8,6 +8,7 @@
 //
 // The machine is shared: besides wall-clock rates (best of --repeats runs) it prints
 // rays per CPU-second of the casting threads, which other work disturbs much less.
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -17,8 +18,6 @@
 #include <string>
 #include <thread>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 #include "common/amrl_import.h"
 #include "common/grid_ray_caster.h"
@@ -58,8 +57,7 @@ struct Timing {
 };
 
 // One scan from each pose, the poses dealt round-robin to `threads` threads.
-Timing time_scans(const RayCaster& rc, const std::vector<Pose>& poses, const std::vector<double>& beams,
-                  int threads) {
+Timing time_scans(const RayCaster& rc, const std::vector<Pose>& poses, const std::vector<double>& beams, int threads) {
   std::vector<double> cpu(threads, 0), sums(threads, 0);
   const auto t0 = Clock::now();
   std::vector<std::thread> pool;
@@ -142,10 +140,11 @@ int main(int argc, char** argv) {
   const bool amrl = map_path.ends_with(".vectormap.txt");
   const Map map = amrl ? read_amrl_file(map_path, AmrlOptions{}) : read_seed_file(map_path);
   const std::vector<double> beams = evenly_spread_angles(beams_n, fov_deg * kPi / 180);
-  std::printf("map %s: %zu obstacles, %zu segments; rmax %.1f m, %d beams over %.0f deg, hL %.2f m; "
-              "%u hardware threads\n",
-              map_path.c_str(), map.obstacles.size(), map.segment_count(), opt.rmax, beams_n, fov_deg,
-              opt.laser_height, std::thread::hardware_concurrency());
+  std::printf(
+      "map %s: %zu obstacles, %zu segments; rmax %.1f m, %d beams over %.0f deg, hL %.2f m; "
+      "%u hardware threads\n",
+      map_path.c_str(), map.obstacles.size(), map.segment_count(), opt.rmax, beams_n, fov_deg, opt.laser_height,
+      std::thread::hardware_concurrency());
 
   auto t0 = Clock::now();
   const SeedRayCaster seed(map, opt);
@@ -196,9 +195,9 @@ int main(int argc, char** argv) {
       const char* name;
       GridOptions g;
     };
-    for (const Alt& alt : {Alt{"grid walk 1 m, plain", {1.0, false}}, Alt{"grid walk 1 m, empty-space skip", {1.0, true}},
-                           Alt{"grid walk 2 m, empty-space skip", {2.0, true}},
-                           Alt{"grid walk 4 m, empty-space skip", {4.0, true}}}) {
+    for (const Alt& alt :
+         {Alt{"grid walk 1 m, plain", {1.0, false}}, Alt{"grid walk 1 m, empty-space skip", {1.0, true}},
+          Alt{"grid walk 2 m, empty-space skip", {2.0, true}}, Alt{"grid walk 4 m, empty-space skip", {4.0, true}}}) {
       const GridRayCaster g(map, opt, alt.g);
       std::snprintf(note, sizeof note, "%.2f MiB", mib(g.memory_bytes()));
       row(alt.name, rate(g, poses, beams, 1, repeats), rate(g, poses, beams, threads, repeats), note);
@@ -211,9 +210,10 @@ int main(int argc, char** argv) {
     const std::vector<Pose> few(rays.begin(), rays.begin() + 20000);
     const GridRayCaster grid(map, opt);
     const double seed_single = single_rate(seed, few), fast_single = single_rate(fast, rays);
-    std::printf("\nsingle random rays (cast), M rays per CPU-s: seed (culling per ray) %.3f, fast %.2f (%.0f x),"
-                " grid walk 1 m %.2f\n",
-                seed_single, fast_single, fast_single / seed_single, single_rate(grid, rays));
+    std::printf(
+        "\nsingle random rays (cast), M rays per CPU-s: seed (culling per ray) %.3f, fast %.2f (%.0f x),"
+        " grid walk 1 m %.2f\n",
+        seed_single, fast_single, fast_single / seed_single, single_rate(grid, rays));
     std::printf("fast scans per CPU-s / seed culling per ray: %.0f x\n", f1.cpu / seed_single);
   }
 
@@ -230,16 +230,19 @@ int main(int argc, char** argv) {
   const double hz_median = 1 / wall[wall.size() / 2], hz_best = 1 / wall[0];
   const double hz_cpu = threads / cpu_best;  // if each thread had its core to itself
   const double seed_update_s = pf.size() * beams.size() / (s2.wall * 1e6);
-  std::printf("\nfilter update, %zu poses x %d rays on %d threads: %.1f Hz median, %.1f Hz best, %.1f Hz CPU-bound"
-              " (seed %.2f Hz)\n",
-              pf.size(), beams_n, threads, hz_median, hz_best, hz_cpu, 1 / seed_update_s);
+  std::printf(
+      "\nfilter update, %zu poses x %d rays on %d threads: %.1f Hz median, %.1f Hz best, %.1f Hz CPU-bound"
+      " (seed %.2f Hz)\n",
+      pf.size(), beams_n, threads, hz_median, hz_best, hz_cpu, 1 / seed_update_s);
   std::printf("fast structure: %.2f MiB (%zu cells of %.2g m, %zu list entries, %.1f per cell)\n",
               mib(fast.memory_bytes()), fast.candidates().cells(), fast.candidates().cell(),
-              fast.candidates().entries(), static_cast<double>(fast.candidates().entries()) / fast.candidates().cells());
+              fast.candidates().entries(),
+              static_cast<double>(fast.candidates().entries()) / fast.candidates().cells());
 
-  std::printf("\ngoal: >= 40 M rays/s on %d threads: %s (%.1f M wall, %.1f M CPU-bound); >= 150x seed: %s (%.1f x);"
-              " update >= 50 Hz (best run): %s; < 256 MiB: %s\n",
-              threads, f2.wall >= 40 ? "yes" : "no", f2.wall, threads * f1.cpu, f2.wall / s2.wall >= 150 ? "yes" : "no",
-              f2.wall / s2.wall, hz_best >= 50 ? "yes" : "no", mib(fast.memory_bytes()) < 256 ? "yes" : "no");
+  std::printf(
+      "\ngoal: >= 40 M rays/s on %d threads: %s (%.1f M wall, %.1f M CPU-bound); >= 150x seed: %s (%.1f x);"
+      " update >= 50 Hz (best run): %s; < 256 MiB: %s\n",
+      threads, f2.wall >= 40 ? "yes" : "no", f2.wall, threads * f1.cpu, f2.wall / s2.wall >= 150 ? "yes" : "no",
+      f2.wall / s2.wall, hz_best >= 50 ? "yes" : "no", mib(fast.memory_bytes()) < 256 ? "yes" : "no");
   return 0;
 }

@@ -70,8 +70,12 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "common/geometry.h"
 #include "protocol/connection.h"
 #include "protocol/db_settings.h"
+#include "protocol/map_codec.h"
+#include "protocol/map_store.h"
+#include "protocol/params.h"
 #include "protocol/sql_util.h"
 
 namespace {
@@ -101,7 +105,7 @@ struct Options {
   std::string map = "UT_Campus";
   int lone_count = 40;
   int connect_concurrency = 4;
-  int floor_threads = 1, floor_batch = 32;
+  int floor_threads = 1, floor_batch = 256, lean_threads = 2;
   bool robot_socket = false;
   std::vector<int> server_pids;
   int db_pid = 0;
@@ -359,7 +363,7 @@ class RobotThread {
   void schedule(Robot& r, TimePoint now);
   bool in_window(TimePoint t) const { return sh_.go && t >= sh_.m_start && t < sh_.m_end; }
   bool done(const Robot& r, TimePoint now) const;
-  bool needs_ready() const { return o_.mode != "floor"; }  // the server wants Ready first
+  bool needs_ready() const { return o_.mode == "server" || o_.mode == "idle"; }  // the server wants Ready first
 
   Shared& sh_;
   const Options& o_;
@@ -827,9 +831,17 @@ void floor_answerer(Shared& sh, const fleetmap::DbSettings& db, double& cpu_in_w
     mysql_close(c);
     return;
   }
+  struct Retry {};  // deadlock or lock wait timeout: roll back and claim again
+  auto fail = [&]() {
+    const unsigned e = mysql_errno(c);
+    if (e == 1213 || e == 1205) {
+      mysql_query(c, "ROLLBACK");
+      throw Retry{};
+    }
+    throw std::runtime_error("floor answerer: " + std::string(mysql_error(c)));
+  };
   auto run = [&](const std::string& q) {
-    if (mysql_real_query(c, q.data(), q.size()) != 0)
-      throw std::runtime_error("floor answerer: " + std::string(mysql_error(c)));
+    if (mysql_real_query(c, q.data(), q.size()) != 0) fail();
     do {  // drain every result of a multi-statement
       if (MYSQL_RES* r = mysql_store_result(c)) mysql_free_result(r);
     } while (mysql_next_result(c) == 0);
@@ -842,6 +854,7 @@ void floor_answerer(Shared& sh, const fleetmap::DbSettings& db, double& cpu_in_w
   }
   run("SET SESSION TRANSACTION ISOLATION LEVEL READ COMMITTED");
   run("SET autocommit = 0");
+  uint64_t retries = 0;
   const std::string claim =
       "SELECT id, db_user, op FROM rr ORDER BY id LIMIT " + std::to_string(sh.opt.floor_batch) + " FOR UPDATE SKIP LOCKED";
   double cpu0 = NAN, cpu1 = NAN;
@@ -852,8 +865,8 @@ void floor_answerer(Shared& sh, const fleetmap::DbSettings& db, double& cpu_in_w
         if (std::isnan(cpu0) && now >= sh.m_start) cpu0 = thread_cpu_s();
         if (std::isnan(cpu1) && now >= sh.m_end) cpu1 = thread_cpu_s();
       }
-      if (mysql_real_query(c, claim.data(), claim.size()) != 0)
-        throw std::runtime_error("floor answerer: " + std::string(mysql_error(c)));
+      try {
+      if (mysql_real_query(c, claim.data(), claim.size()) != 0) fail();
       MYSQL_RES* res = mysql_store_result(c);
       std::string del, ins;
       size_t n = 0;
@@ -879,11 +892,163 @@ void floor_answerer(Shared& sh, const fleetmap::DbSettings& db, double& cpu_in_w
       q += "DELETE FROM rr WHERE id IN (" + del + "); COMMIT";
       run(q);
       handled += n;
+      } catch (const Retry&) {
+        ++retries;
+      }
     }
   } catch (const std::exception& e) {
     sh.report_error(e.what());
   }
+  if (retries) sh.report_error("floor answerer: " + std::to_string(retries) + " batch(es) retried after a deadlock");
   mysql_close(c);
+  if (std::isnan(cpu1)) cpu1 = thread_cpu_s();
+  cpu_in_window = std::isnan(cpu0) ? 0 : cpu1 - cpu0;
+}
+
+// ---------------------------------------------------------------------------------------
+// Lean: a prototype of a batched server, for the proposals. The same durable work as
+// fleetmap-server (trajectory row and robots pose per SendPos, gps_fixes row and OpAck per
+// SendGPS, the clipped window from the spatial index as a seed-text SetMap per GetMap,
+// last_seen, rr deleted, all in one transaction per batch, robots claimed FOR UPDATE SKIP
+// LOCKED before their requests are read), but batched: multi-row statements, and the
+// writes and the COMMIT sent as one multi-statement. No per-request savepoint, no task or
+// map-info look-ups (a real server would cache them), no validation beyond JSON parsing.
+// Idle back-off as fleetmap-server's: 0.25 ms doubling up to --poll-max-ms.
+
+void lean_answerer(Shared& sh, const fleetmap::DbSettings& db, double& cpu_in_window, uint64_t& handled,
+                   uint64_t& empty_polls) {
+  using namespace fleetmap;
+  mysqlpp::Connection conn(true);
+  conn.set_option(new mysqlpp::SetCharsetNameOption("utf8mb4"));
+  conn.set_option(new mysqlpp::MultiStatementsOption(true));
+  const bool sock = !db.socket.empty();
+  conn.connect(db.database.c_str(), sock ? db.socket.c_str() : db.host.c_str(), db.user.c_str(), db.password.c_str(),
+               sock ? 0 : db.port);
+  execute(conn, "SET SESSION TRANSACTION ISOLATION LEVEL READ COMMITTED");
+  execute(conn, "SET SESSION innodb_lock_wait_timeout = 1");
+  execute(conn, "SET autocommit = 0");  // the first read opens the transaction; the multi-statement ends it
+  MapStore maps(conn);
+  const Rect border{sh.bounds.xmin, sh.bounds.ymin, sh.bounds.xmax, sh.bounds.ymax};
+  const size_t batch = static_cast<size_t>(sh.opt.floor_batch);
+  const double poll_max = sh.opt.poll_max_ms >= 0 ? sh.opt.poll_max_ms : 10;
+  double idle_ms = 0, cpu0 = NAN, cpu1 = NAN;
+  auto num_or = [](const Json& j, const char* k) { return j.contains(k) && j[k].is_number() ? j[k].get<double>() : 0.0; };
+  while (!sh.stop_helpers.load()) {
+    if (sh.go) {
+      const TimePoint now = Clock::now();
+      if (std::isnan(cpu0) && now >= sh.m_start) cpu0 = thread_cpu_s();
+      if (std::isnan(cpu1) && now >= sh.m_end) cpu1 = thread_cpu_s();
+    }
+    try {
+      // 1. Who waits, oldest first: a bounded read of rr's head (O(batch), no locks).
+      std::vector<std::string> accounts;
+      {
+        mysqlpp::Query q = conn.query();
+        q << "SELECT db_user FROM rr ORDER BY id LIMIT " << batch;
+        std::set<std::string> seen;
+        for (const mysqlpp::Row& r : q.store())
+          if (seen.insert(sql::to_string(r[0])).second) accounts.push_back(sql::to_string(r[0]));
+      }
+      if (accounts.empty()) {
+        ++empty_polls;
+        idle_ms = std::clamp(idle_ms * 2, 0.25, poll_max);
+        std::this_thread::sleep_for(from_ms(idle_ms));
+        continue;
+      }
+      idle_ms = 0;
+      // 2. Claim the robots, 3. read their requests in id order.
+      struct Bot { unsigned id; std::optional<unsigned> map_id; std::string user; std::string last_seen;
+                   std::optional<std::array<double, 4>> pose; };
+      std::map<std::string, Bot> bots;
+      {
+        mysqlpp::Query q = conn.query();
+        q << "SELECT id, map_id, db_user FROM robots WHERE db_user IN (";
+        for (size_t i = 0; i < accounts.size(); ++i) q << (i ? "," : "") << mysqlpp::quote << accounts[i];
+        q << ") FOR UPDATE SKIP LOCKED";
+        for (const mysqlpp::Row& r : q.store()) {
+          Bot b{static_cast<unsigned>(sql::to_uint(r[0])), std::nullopt, sql::to_string(r[2]), "", std::nullopt};
+          if (!r[1].is_null()) b.map_id = static_cast<unsigned>(sql::to_uint(r[1]));
+          bots.emplace(b.user, b);
+        }
+      }
+      if (bots.empty()) continue;  // another worker holds them; nothing is locked
+      mysqlpp::Query rq = conn.query();
+      rq << "SELECT id, db_user, op, params, created_at FROM rr WHERE db_user IN (";
+      {
+        size_t i = 0;
+        for (auto& [u, b] : bots) rq << (i++ ? "," : "") << mysqlpp::quote << u;
+      }
+      rq << ") ORDER BY id LIMIT " << batch;
+      const mysqlpp::StoreQueryResult reqs = rq.store();
+      // 4. Work, then one multi-statement with every write and the COMMIT.
+      std::string traj, gps, del;
+      mysqlpp::Query w = conn.query();
+      bool any_answer = false;
+      std::ostringstream answers;
+      for (const mysqlpp::Row& r : reqs) {
+        const std::string id = sql::to_string(r[0]), user = sql::to_string(r[1]), op = sql::to_string(r[2]),
+                          at = sql::to_string(r[4]);
+        Bot& b = bots.at(user);
+        b.last_seen = at;
+        del += (del.empty() ? "" : ",") + id;
+        const Json p = Json::parse(sql::to_string(r[3]), nullptr, false);
+        if (!p.is_object()) continue;
+        char buf[320];
+        if (op == "SendPos") {
+          const double x = num_or(p, "x"), y = num_or(p, "y"), th = num_or(p, "theta"), v = num_or(p, "v");
+          std::snprintf(buf, sizeof buf, "%s(%u,'%s',%.17g,%.17g,%.17g,%.17g,%.17g,Point(%.17g,%.17g))",
+                        traj.empty() ? "" : ",", b.id, at.c_str(), x, y, th, v, num_or(p, "w"), x, y);
+          traj += buf;
+          b.pose = std::array<double, 4>{x, y, th, v};
+        } else if (op == "SendGPS") {
+          std::snprintf(buf, sizeof buf, "%s(%u,'%s',%.17g,%.17g)", gps.empty() ? "" : ",", b.id, at.c_str(),
+                        num_or(p, "lat"), num_or(p, "lon"));
+          gps += buf;
+          w << (any_answer ? "," : "") << "(" << b.id << "," << mysqlpp::quote << user << "," << id
+            << ",'OpAck','{\"request_id\":" << id << "}',NULL,SYSDATE(6))";
+          any_answer = true;
+        } else if (op == "GetMap" && b.map_id) {
+          const Rect win = intersection(Rect::centred({num_or(p, "x"), num_or(p, "y")}, std::min(num_or(p, "w"), 1000.0),
+                                                      std::min(num_or(p, "h"), 1000.0)),
+                                        border);
+          const Map m = maps.window(*b.map_id, win);
+          w << (any_answer ? "," : "") << "(" << b.id << "," << mysqlpp::quote << user << "," << id << ",'SetMap',"
+            << mysqlpp::quote << encode(set_map_params(m, MapEncoding::Seed)).dump() << "," << mysqlpp::quote
+            << encode_map(m, MapEncoding::Seed) << ",SYSDATE(6))";
+          any_answer = true;
+        }
+      }
+      const std::string sa_values = w.str();
+      mysqlpp::Query m = conn.query();
+      if (!traj.empty()) m << "INSERT INTO trajectories (robot_id, t, x, y, theta, v, w, pos) VALUES " << traj << ";";
+      if (!gps.empty()) m << "INSERT INTO gps_fixes (robot_id, t, lat, lon) VALUES " << gps << ";";
+      if (any_answer)
+        m << "INSERT INTO sa (robot_id, db_user, request_id, op, params, payload, created_at) VALUES " << sa_values << ";";
+      for (auto& [u, b] : bots) {
+        if (b.last_seen.empty()) continue;
+        m << "UPDATE robots SET last_seen = GREATEST(COALESCE(last_seen, 0), '" << b.last_seen << "')";
+        if (b.pose) {
+          char buf[200];
+          std::snprintf(buf, sizeof buf, ", x = %.17g, y = %.17g, theta = %.17g, v = %.17g", (*b.pose)[0], (*b.pose)[1],
+                        (*b.pose)[2], (*b.pose)[3]);
+          m << buf;
+        }
+        m << " WHERE id = " << b.id << ";";
+      }
+      if (!del.empty()) m << "DELETE FROM rr WHERE id IN (" << del << ");";
+      m << "COMMIT";
+      m.store();
+      while (m.more_results()) m.store_next();
+      handled += reqs.size();
+    } catch (const mysqlpp::Exception& e) {
+      sh.report_error(std::string("lean answerer: ") + e.what());
+      try {
+        execute(conn, "ROLLBACK");
+      } catch (const mysqlpp::Exception&) {
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+  }
   if (std::isnan(cpu1)) cpu1 = thread_cpu_s();
   cpu_in_window = std::isnan(cpu0) ? 0 : cpu1 - cpu0;
 }
@@ -911,18 +1076,64 @@ std::string f2(double v, const char* f = "%.2f") {
   std::snprintf(b, sizeof b, f, v);
   return b;
 }
+// Latencies: two decimals below 100 ms, fewer above (a collapsed run shows seconds).
+std::string ms(double v) { return f2(v, v >= 1000 ? "%.0f" : v >= 100 ? "%.1f" : "%.2f"); }
 std::string ratio(double a, double b) { return (std::isnan(a) || std::isnan(b) || b <= 0) ? "-" : f2(a / b, "%.1fx"); }
 
-// The floor row to compare a server row with: same phase group, same robot count.
+// The floor row to compare a row with: a fleet floor of the same robot count, measured in
+// phase 1 for phase 2, and in phase 4 for phase 4.
 const Json* floor_for(const std::vector<Json>& rows, const Json& r) {
+  const std::string ph = r["phase"] == "scaling" ? "scaling" : "floor";
   const Json* best = nullptr;
   for (const Json& f : rows)
-    if (f["mode"] == "floor" && f["workload"] == "fleet" && f["robots"] == r["robots"]) best = &f;
+    if (f["phase"] == ph && f["mode"] == "floor" && f["workload"] == "fleet" && f["robots"] == r["robots"]) best = &f;
   return best;
 }
 
 double worst_p99(const Json& r) {
   return std::max(num(r, {"answer_ms", "GetMap", "p99"}), num(r, {"answer_ms", "SendGPS", "p99"}));
+}
+double worst_p50(const Json& r) {
+  return std::max(num(r, {"answer_ms", "GetMap", "p50"}), num(r, {"answer_ms", "SendGPS", "p50"}));
+}
+
+std::string row_name(const Json& r) {
+  if (r["mode"] == "server") return std::to_string(r.value("server_procs", 1)) + " proc";
+  return r["mode"].get<std::string>();  // floor, lean
+}
+
+// One table of fleet runs; the last column compares with the floor of the same size.
+void fleet_table(const std::vector<Json>& rows, const std::vector<Json>& v) {
+  std::printf("%-7s %6s %6s | %-17s %-17s | %-17s | %6s %6s %6s %5s | %s\n", "run", "robots", "req/s", "GetMap p50/p99",
+              "SendGPS p50/p99", "SendPos lag", "srv%", "db%", "rob%", "mach", "x floor: GetMap p50,p99 SendGPS p50,p99 lag p50,p99");
+  for (const Json& r : v) {
+    std::string vs;
+    if (r["mode"] != "floor")
+      if (const Json* f = floor_for(rows, r)) {
+        auto x = [&](const char* a, const char* k, const char* p) { return ratio(num(r, {a, k, p}), num(*f, {a, k, p})); };
+        vs = x("answer_ms", "GetMap", "p50") + "," + x("answer_ms", "GetMap", "p99") + "  " + x("answer_ms", "SendGPS", "p50") +
+             "," + x("answer_ms", "SendGPS", "p99") + "  " + x("lag_ms", "SendPos", "p50") + "," + x("lag_ms", "SendPos", "p99");
+      }
+    const double unans = num(r, {"unanswered"});
+    if (unans > 0) vs += "  " + f2(unans, "%.0f") + " UNANSWERED";
+    // srv%: fleetmap-server process(es), or this program's answering loop (floor, lean).
+    const double srv = r["mode"] == "server" ? num(r, {"cpu", "server_pct"}) : num(r, {"cpu", "floor_answerer_pct"});
+    std::printf("%-7s %6d %6.0f | %7s / %7s %7s / %7s | %7s / %7s | %6s %6s %6s %5s | %s\n", row_name(r).c_str(),
+                r["robots"].get<int>(), num(r, {"rate_sent"}), ms(num(r, {"answer_ms", "GetMap", "p50"})).c_str(),
+                ms(num(r, {"answer_ms", "GetMap", "p99"})).c_str(), ms(num(r, {"answer_ms", "SendGPS", "p50"})).c_str(),
+                ms(num(r, {"answer_ms", "SendGPS", "p99"})).c_str(), ms(num(r, {"lag_ms", "SendPos", "p50"})).c_str(),
+                ms(num(r, {"lag_ms", "SendPos", "p99"})).c_str(), f2(srv, "%.0f").c_str(),
+                f2(num(r, {"cpu", "db_pct"}), "%.0f").c_str(), f2(num(r, {"cpu", "robots_pct"}), "%.0f").c_str(),
+                f2(num(r, {"cpu", "machine_pct"}), "%.0f").c_str(), vs.c_str());
+  }
+}
+
+void db_line(const char* what, const Json& r) {
+  std::printf("  %-6s %5.0f req/s, rr backlog p50/max %s/%s rows, DB %s statements/s, %s COMMIT/s, %s fsyncs/s\n", what,
+              num(r, {"rate_sent"}), f2(num(r, {"backlog", "p50"}), "%.0f").c_str(), f2(num(r, {"backlog", "max"}), "%.0f").c_str(),
+              f2(num(r, {"cpu", "db_per_s", "Questions"}), "%.0f").c_str(),
+              f2(num(r, {"cpu", "db_per_s", "Com_commit"}), "%.0f").c_str(),
+              f2(num(r, {"cpu", "db_per_s", "Innodb_data_fsyncs"}), "%.0f").c_str());
 }
 
 void print_report(const std::string& file, const std::string& phase) {
@@ -930,132 +1141,81 @@ void print_report(const std::string& file, const std::string& phase) {
   std::vector<Json> rows;
   for (std::string line; std::getline(in, line);)
     if (!line.empty()) rows.push_back(Json::parse(line));
-  auto of = [&](const std::string& ph) {
+  auto of = [&](const std::string& ph, const std::string& mode = "") {
     std::vector<Json> v;
     for (const Json& r : rows)
-      if (r["phase"] == ph) v.push_back(r);
+      if (r["phase"] == ph && (mode.empty() || r["mode"] == mode)) v.push_back(r);
     return v;
   };
   const bool all = phase == "all";
+  const std::vector<Json> floors = of("floor");
   if (all || phase == "floor") {
     std::printf("\n== 1. Floor: the bare database path (robots -> rr -> minimal answering loop -> sa -> sa_mine)\n");
-    std::printf("%-26s %6s %8s | %-15s %-15s | %-15s | %7s %7s %7s %7s\n", "run", "robots", "req/s", "GetMap p50/p99",
-                "SendGPS p50/p99", "SendPos lag", "ansCPU%", "dbCPU%", "robCPU%", "mach%");
-    for (const Json& r : of("floor"))
-      std::printf("%-26s %6d %8.0f | %6s / %6s  %6s / %6s  | %6s / %6s  | %7s %7s %7s %7s\n",
-                  r["label"].get<std::string>().c_str(), r["robots"].get<int>(), num(r, {"rate_sent"}),
-                  f2(num(r, {"answer_ms", "GetMap", "p50"})).c_str(), f2(num(r, {"answer_ms", "GetMap", "p99"})).c_str(),
-                  f2(num(r, {"answer_ms", "SendGPS", "p50"})).c_str(), f2(num(r, {"answer_ms", "SendGPS", "p99"})).c_str(),
-                  f2(num(r, {"lag_ms", "SendPos", "p50"})).c_str(), f2(num(r, {"lag_ms", "SendPos", "p99"})).c_str(),
-                  f2(num(r, {"cpu", "floor_answerer_pct"}), "%.0f").c_str(), f2(num(r, {"cpu", "db_pct"}), "%.0f").c_str(),
-                  f2(num(r, {"cpu", "robots_pct"}), "%.0f").c_str(), f2(num(r, {"cpu", "machine_pct"}), "%.0f").c_str());
-    const std::vector<Json> fl = of("floor");
-    const double poll = fl.empty() ? NAN : num(fl[0], {"answer_poll_ms"}), mon = fl.empty() ? NAN : num(fl[0], {"monitor_ms"});
-    std::printf("(ms; SPEC 9: p50 ~1.3 ms, p99 ~2.3 ms for one robot. Answer: INSERT start -> answer read; robots\n"
-                " poll sa_mine every %g ms while an answer is due (then every 10%% of the wait). SendPos lag: INSERT\n"
-                " start -> rr row gone, monitor snapshot of rr every %g ms (+-%g ms). CPU: %% of one core; ansCPU = the\n"
-                " answering loop, robCPU = the robots (this program), mach = whole machine incl. other users.)\n",
+    for (const Json& r : floors)
+      if (r["workload"] == "lone")
+        std::printf("lone robot (one request at a time): SendGPS answer p50 %s ms, p99 %s ms   (SPEC 9: p50 ~1.3, p99 ~2.3)\n",
+                    f2(num(r, {"answer_ms", "SendGPS", "p50"})).c_str(), f2(num(r, {"answer_ms", "SendGPS", "p99"})).c_str());
+    std::vector<Json> fleet;
+    for (const Json& r : floors)
+      if (r["workload"] == "fleet") fleet.push_back(r);
+    fleet_table(rows, fleet);
+    const double poll = floors.empty() ? NAN : num(floors[0], {"answer_poll_ms"});
+    const double mon = floors.empty() ? NAN : num(floors[0], {"monitor_ms"});
+    std::printf("(ms. Answer: INSERT start -> answer read; robots poll sa_mine every %g ms while an answer is due,\n"
+                " then every 10%% of the wait. SendPos lag: INSERT start -> rr row gone, monitor snapshot of rr every %g ms\n"
+                " (+-%g ms). CPU in %% of one core: srv = fleetmap-server (or the answering loop for floor and lean),\n"
+                " db = mariadbd, rob = the robots (this program), mach = whole machine incl. other users, of 200.)\n",
                 poll, mon, mon / 2);
   }
-  auto server_table = [&](const std::vector<Json>& v, bool procs) {
-    std::printf("%-5s %6s %8s | %-15s %-15s | %-15s | %7s %7s %7s %7s | %s\n", procs ? "procs" : "", "robots", "req/s",
-                "GetMap p50/p99", "SendGPS p50/p99", "SendPos lag", "srvCPU%", "dbCPU%", "robCPU%", "mach%",
-                "vs floor (GetMap p50,p99 / SendGPS p50,p99 / lag p50,p99)");
-    for (const Json& r : v) {
-      const Json* f = floor_for(rows, r);
-      std::string vs = "-";
-      if (f) {
-        const Json& F = *f;
-        auto rr = [&](const char* a, const char* k, const char* p) { return ratio(num(r, {a, k, p}), num(F, {a, k, p})); };
-        vs = rr("answer_ms", "GetMap", "p50") + "," + rr("answer_ms", "GetMap", "p99") + " / " +
-             rr("answer_ms", "SendGPS", "p50") + "," + rr("answer_ms", "SendGPS", "p99") + " / " +
-             rr("lag_ms", "SendPos", "p50") + "," + rr("lag_ms", "SendPos", "p99");
-      }
-      const double unans = num(r, {"unanswered"});
-      std::printf("%-5s %6d %8.0f | %6s / %6s  %6s / %6s  | %6s / %6s  | %7s %7s %7s %7s | %s%s\n",
-                  procs ? std::to_string(r.value("server_procs", 1)).c_str() : "", r["robots"].get<int>(),
-                  num(r, {"rate_sent"}), f2(num(r, {"answer_ms", "GetMap", "p50"})).c_str(),
-                  f2(num(r, {"answer_ms", "GetMap", "p99"})).c_str(), f2(num(r, {"answer_ms", "SendGPS", "p50"})).c_str(),
-                  f2(num(r, {"answer_ms", "SendGPS", "p99"})).c_str(), f2(num(r, {"lag_ms", "SendPos", "p50"})).c_str(),
-                  f2(num(r, {"lag_ms", "SendPos", "p99"})).c_str(), f2(num(r, {"cpu", "server_pct"}), "%.0f").c_str(),
-                  f2(num(r, {"cpu", "db_pct"}), "%.0f").c_str(), f2(num(r, {"cpu", "robots_pct"}), "%.0f").c_str(),
-                  f2(num(r, {"cpu", "machine_pct"}), "%.0f").c_str(), vs.c_str(),
-                  unans > 0 ? ("  (" + f2(unans, "%.0f") + " unanswered)").c_str() : "");
-    }
-  };
   if (all || phase == "server") {
-    std::printf("\n== 2. The real server (1 process, default workers): fleet traffic, beside the floor\n");
+    std::printf("\n== 2. The real server (1 process, default workers) beside the floor of phase 1; lean = a batched\n"
+                "      prototype in fleetmap-loadgen doing the same durable work (see --mode lean)\n");
     const std::vector<Json> v = of("server");
-    server_table(v, false);
+    fleet_table(rows, v);
     for (const Json& r : v) {
       const Json* f = floor_for(rows, r);
-      const double p50 = std::max(num(r, {"answer_ms", "GetMap", "p50"}), num(r, {"answer_ms", "SendGPS", "p50"}));
-      const double p99 = worst_p99(r);
-      std::printf("goal at %d robots: p50 <= 5 ms: %s (%.2f)   p99 <= 20 ms: %s (%.2f)", r["robots"].get<int>(),
-                  p50 <= 5 ? "met" : "MISSED", p50, p99 <= 20 ? "met" : "MISSED", p99);
+      const double p50 = worst_p50(r), p99 = worst_p99(r);
+      std::printf("%s at %d robots: p50 <= 5 ms %s (%.2f), p99 <= 20 ms %s (%.2f)", row_name(r).c_str(),
+                  r["robots"].get<int>(), p50 <= 5 ? "met" : "MISSED", p50, p99 <= 20 ? "met" : "MISSED", p99);
       if (f) {
-        const double f50 = std::max(num(*f, {"answer_ms", "GetMap", "p50"}), num(*f, {"answer_ms", "SendGPS", "p50"}));
-        const double f99 = worst_p99(*f);
-        std::printf("   <= 3x floor: p50 %s (%.1fx), p99 %s (%.1fx)", p50 <= 3 * f50 ? "met" : "MISSED", p50 / f50,
+        const double f50 = worst_p50(*f), f99 = worst_p99(*f);
+        std::printf(", <= 3x floor: p50 %s (%.1fx), p99 %s (%.1fx)", p50 <= 3 * f50 ? "met" : "MISSED", p50 / f50,
                     p99 <= 3 * f99 ? "met" : "MISSED", p99 / f99);
       }
-      std::printf("\n  server: %.0f req/s sent, rr backlog p50/max %s/%s rows, DB %s statements/s, %s COMMITs/s, %s "
-                  "fsyncs/s\n",
-                  num(r, {"rate_sent"}), f2(num(r, {"backlog", "p50"}), "%.0f").c_str(),
-                  f2(num(r, {"backlog", "max"}), "%.0f").c_str(),
-                  f2(num(r, {"cpu", "db_per_s", "Questions"}), "%.0f").c_str(),
-                  f2(num(r, {"cpu", "db_per_s", "Com_commit"}), "%.0f").c_str(),
-                  f2(num(r, {"cpu", "db_per_s", "Innodb_data_fsyncs"}), "%.0f").c_str());
-      if (f)
-        std::printf("  floor:  %.0f req/s sent, rr backlog p50/max %s/%s rows, DB %s statements/s, %s COMMITs/s, %s "
-                    "fsyncs/s\n",
-                    num(*f, {"rate_sent"}), f2(num(*f, {"backlog", "p50"}), "%.0f").c_str(),
-                    f2(num(*f, {"backlog", "max"}), "%.0f").c_str(),
-                    f2(num(*f, {"cpu", "db_per_s", "Questions"}), "%.0f").c_str(),
-                    f2(num(*f, {"cpu", "db_per_s", "Com_commit"}), "%.0f").c_str(),
-                    f2(num(*f, {"cpu", "db_per_s", "Innodb_data_fsyncs"}), "%.0f").c_str());
+      std::printf("\n");
+      db_line(row_name(r).c_str(), r);
+      if (f) db_line("floor", *f);
     }
   }
   if (all || phase == "idle") {
-    std::printf("\n== 3. Idle: polling cost (no traffic) and a lone request, by --poll-max-ms\n");
-    std::printf("%12s | %12s %12s %10s | %-22s %s\n", "poll_max_ms", "srvCPU% idle", "dbCPU% idle", "stmts/s",
-                "lone SendGPS p50/p99", "(floor, lone robot)");
-    const Json* lone_floor = nullptr;
-    for (const Json& r : of("floor"))
-      if (r["workload"] == "lone") lone_floor = &r;
+    std::printf("\n== 3. Idle: polling cost with no traffic, and a lone request, by --poll-max-ms\n");
+    std::string lone = "-";
+    for (const Json& r : floors)
+      if (r["workload"] == "lone")
+        lone = f2(num(r, {"answer_ms", "SendGPS", "p50"})) + " / " + f2(num(r, {"answer_ms", "SendGPS", "p99"}));
+    std::printf("%11s | %9s %9s %8s | %-21s | %s\n", "poll_max_ms", "srv% idle", "db% idle", "stmts/s", "lone SendGPS p50/p99",
+                "floor lone robot p50/p99");
     for (const Json& r : of("idle"))
-      std::printf("%12s | %12s %12s %10s | %8s / %8s    %s\n", f2(num(r, {"poll_max_ms"}), "%g").c_str(),
-                  f2(num(r, {"idle_cpu", "server_pct"}), "%.2f").c_str(), f2(num(r, {"idle_cpu", "db_pct"}), "%.2f").c_str(),
+      std::printf("%11s | %9s %9s %8s | %8s / %8s   | %s\n", f2(num(r, {"poll_max_ms"}), "%g").c_str(),
+                  f2(num(r, {"idle_cpu", "server_pct"})).c_str(), f2(num(r, {"idle_cpu", "db_pct"})).c_str(),
                   f2(num(r, {"idle_cpu", "db_per_s", "Questions"}), "%.0f").c_str(),
                   f2(num(r, {"answer_ms", "SendGPS", "p50"})).c_str(), f2(num(r, {"answer_ms", "SendGPS", "p99"})).c_str(),
-                  lone_floor ? (f2(num(*lone_floor, {"answer_ms", "SendGPS", "p50"})) + " / " +
-                                f2(num(*lone_floor, {"answer_ms", "SendGPS", "p99"})))
-                                   .c_str()
-                             : "-");
+                  lone.c_str());
   }
   if (all || phase == "scaling") {
-    std::printf("\n== 4. Scaling: robots x server processes (each with default workers); stop when p99 > 20 ms\n");
-    std::vector<Json> v = of("scaling");
-    std::vector<Json> floors, servers;
-    for (const Json& r : v) (r["mode"] == "floor" ? floors : servers).push_back(r);
-    if (!floors.empty()) {
-      std::printf("-- floor at the same robot counts\n");
-      server_table(floors, false);
+    std::printf("\n== 4. Scaling: robots x server processes (default workers each); a series stops when p99 > 20 ms\n");
+    fleet_table(rows, of("scaling"));
+    std::map<std::string, std::pair<int, int>> best;  // series -> (largest ok, smallest failing)
+    for (const Json& r : of("scaling")) {
+      auto& b = best.try_emplace(row_name(r), 0, 0).first->second;
+      const int n = r["robots"].get<int>();
+      if (worst_p99(r) <= 20 && num(r, {"unanswered"}) == 0) b.first = std::max(b.first, n);
+      else if (!b.second || n < b.second) b.second = n;
     }
-    std::printf("-- fleetmap-server\n");
-    server_table(servers, true);
-    for (int procs : {1, 2, 3, 4}) {
-      int best = 0;
-      bool any = false;
-      for (const Json& r : servers)
-        if (r.value("server_procs", 1) == procs) {
-          any = true;
-          if (worst_p99(r) <= 20 && num(r, {"unanswered"}) == 0) best = std::max(best, r["robots"].get<int>());
-        }
-      if (any)
-        std::printf("%d process(es): largest fleet with p99 <= 20 ms: %s   (target 1000 robots ~ 4000+ req/s)\n", procs,
-                    best ? std::to_string(best).c_str() : "none tried");
-    }
+    for (auto& [series, b] : best)
+      std::printf("%-7s largest fleet with p99 <= 20 ms: %s%s   (target: 1000 robots, ~4700 req/s)\n", series.c_str(),
+                  b.first ? (std::to_string(b.first) + " robots").c_str() : "none",
+                  b.second ? (" (p99 > 20 ms at " + std::to_string(b.second) + ")").c_str() : "");
   }
 }
 
@@ -1068,8 +1228,8 @@ int main(int argc, char** argv) {
   CLI::App app{"fleetmap-loadgen: robots that speak RR/SA with plain SQL, for measuring fleetmap-server against the "
                "bare database path (driven by scripts/bench-server.sh)"};
   Options o;
-  app.add_option("--mode", o.mode, "floor, server, idle, report")
-      ->check(CLI::IsMember({"floor", "server", "idle", "report"}))
+  app.add_option("--mode", o.mode, "floor, server, lean, idle, report")
+      ->check(CLI::IsMember({"floor", "server", "lean", "idle", "report"}))
       ->capture_default_str();
   app.add_option("--workload", o.workload, "fleet or lone")->check(CLI::IsMember({"fleet", "lone"}))->capture_default_str();
   app.add_option("--robots", o.robots, "robots (accounts PREFIX0001...)")->capture_default_str();
@@ -1097,7 +1257,9 @@ int main(int argc, char** argv) {
   app.add_option("--map", o.map, "the robots' map (for its border)")->capture_default_str();
   app.add_option("--lone-count", o.lone_count, "lone workload: requests")->capture_default_str();
   app.add_option("--floor-threads", o.floor_threads, "floor: answering threads (each busy-polls)")->capture_default_str();
-  app.add_option("--floor-batch", o.floor_batch, "floor: rr rows claimed per transaction")->capture_default_str();
+  app.add_option("--floor-batch", o.floor_batch, "floor and lean: rr rows per transaction")->capture_default_str();
+  app.add_option("--lean-threads", o.lean_threads, "lean: answering threads (back-off polling as the server's)")
+      ->capture_default_str();
   app.add_option("--connect-concurrency", o.connect_concurrency, "connects in flight per client thread")
       ->capture_default_str();
   app.add_flag("--robot-socket", o.robot_socket, "robots connect over the unix socket (default TCP, as real robots)");
@@ -1206,10 +1368,13 @@ int main(int argc, char** argv) {
 
     // Helpers: floor answerers, monitor
     std::vector<std::thread> helpers;
-    std::vector<double> answerer_cpu(o.mode == "floor" ? o.floor_threads : 0, 0);
+    std::vector<double> answerer_cpu(o.mode == "floor" ? o.floor_threads : o.mode == "lean" ? o.lean_threads : 0, 0);
     std::vector<uint64_t> answerer_handled(answerer_cpu.size(), 0), answerer_empty(answerer_cpu.size(), 0);
     for (size_t i = 0; i < answerer_cpu.size(); ++i)
-      helpers.emplace_back([&, i] { floor_answerer(sh, server_db, answerer_cpu[i], answerer_handled[i], answerer_empty[i]); });
+      helpers.emplace_back([&, i] {
+        if (o.mode == "lean") lean_answerer(sh, server_db, answerer_cpu[i], answerer_handled[i], answerer_empty[i]);
+        else floor_answerer(sh, server_db, answerer_cpu[i], answerer_handled[i], answerer_empty[i]);
+      });
 
     const TimePoint t_setup = Clock::now();
     std::vector<std::unique_ptr<RobotThread>> rts;
@@ -1298,8 +1463,9 @@ int main(int argc, char** argv) {
     out["query_errors"] = total.query_errors;
     out["monitor_queries"] = mon_queries;
     if (!total.error_codes.empty()) out["error_codes"] = total.error_codes;
-    if (o.mode == "floor") out["floor"] = {{"handled", handled}, {"empty_polls", empty}, {"threads", o.floor_threads},
-                                           {"batch", o.floor_batch}};
+    if (o.mode == "floor" || o.mode == "lean")
+      out["answerer"] = {{"handled", handled}, {"empty_polls", empty}, {"threads", answerer_cpu.size()},
+                         {"batch", o.floor_batch}};
 
     // Human-readable summary of this run
     std::printf("%s: %.0f requests/s sent over %.1f s (%llu requests)", o.label.c_str(), sent / window_s, window_s,
@@ -1327,7 +1493,7 @@ int main(int argc, char** argv) {
                 "statements/s, %s COMMITs/s, %s fsyncs/s\n",
                 fmt(cpu, "server_pct", "%.1f").c_str(), fmt(cpu, "db_pct", "%.1f").c_str(),
                 fmt(cpu, "robots_pct", "%.1f").c_str(),
-                o.mode == "floor" ? (", floor answerer " + fmt(cpu, "floor_answerer_pct", "%.1f")).c_str() : "",
+                answerer_cpu.empty() ? "" : (", " + o.mode + " answerer " + fmt(cpu, "floor_answerer_pct", "%.1f")).c_str(),
                 fmt(cpu, "machine_pct", "%.0f").c_str(), f2(100 * num(cpu, {"cores"}), "%.0f").c_str(),
                 f2(num(cpu, {"db_per_s", "Questions"}), "%.0f").c_str(), f2(num(cpu, {"db_per_s", "Com_commit"}), "%.0f").c_str(),
                 f2(num(cpu, {"db_per_s", "Innodb_data_fsyncs"}), "%.0f").c_str());

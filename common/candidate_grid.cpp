@@ -3,54 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/rect_distance.h"
+
 namespace fleetmap {
 namespace {
-
-double distance2(Point p, Point a, Point b) {
-  const Point e = b - a;
-  const double len2 = dot(e, e);
-  const double u = len2 > 0 ? std::clamp(dot(p - a, e) / len2, 0.0, 1.0) : 0.0;
-  const Point q = a + u * e - p;
-  return dot(q, q);
-}
-
-double distance2(Point p, const Rect& r) {
-  const double dx = std::max({r.xmin - p.x, 0.0, p.x - r.xmax});
-  const double dy = std::max({r.ymin - p.y, 0.0, p.y - r.ymax});
-  return dx * dx + dy * dy;
-}
-
-// Does the closed segment ab meet the closed rectangle r? (Liang-Barsky)
-bool meets(Point a, Point b, const Rect& r) {
-  const Point d = b - a;
-  double t0 = 0, t1 = 1;
-  const double p[4] = {-d.x, d.x, -d.y, d.y};
-  const double q[4] = {a.x - r.xmin, r.xmax - a.x, a.y - r.ymin, r.ymax - a.y};
-  for (int i = 0; i < 4; ++i) {
-    if (p[i] == 0) {
-      if (q[i] < 0) return false;
-    } else if (p[i] < 0) {
-      t0 = std::max(t0, q[i] / p[i]);
-    } else {
-      t1 = std::min(t1, q[i] / p[i]);
-    }
-  }
-  return t0 <= t1;
-}
-
-double distance2(Point a, Point b, const Rect& r) {
-  if (meets(a, b, r)) return 0;
-  double d = std::min(distance2(a, r), distance2(b, r));
-  for (Point c : {Point{r.xmin, r.ymin}, Point{r.xmax, r.ymin}, Point{r.xmin, r.ymax}, Point{r.xmax, r.ymax}})
-    d = std::min(d, distance2(c, a, b));
-  return d;
-}
-
-double distance2(const Rect& s, const Rect& r) {
-  const double dx = std::max({s.xmin - r.xmax, 0.0, r.xmin - s.xmax});
-  const double dy = std::max({s.ymin - r.ymax, 0.0, r.ymin - s.ymax});
-  return dx * dx + dy * dy;
-}
 
 Rect segment_box(const RaySegment& s) {
   const Point b = s.a + s.e;
@@ -115,18 +71,21 @@ CandidateGrid::CandidateGrid(const LaserObstacles& obstacles, double cell, doubl
         const Rect c = cell_rect(ix, iy);
         if (dist2_to_cell(c) > reach * reach) continue;
         const Point centre{(c.xmin + c.xmax) / 2, (c.ymin + c.ymax) / 2};
-        entries.push_back({static_cast<uint32_t>(iy * nx_ + ix), static_cast<float>(std::sqrt(dist2_to_centre(centre))),
-                           id});
+        entries.push_back(
+            {static_cast<uint32_t>(iy * nx_ + ix), static_cast<float>(std::sqrt(dist2_to_centre(centre))), id});
       }
   };
   for (uint32_t i = 0; i < wall_count_; ++i) {
     const Point a = obstacles.walls[i].a, bb = a + obstacles.walls[i].e;
-    visit(segment_box(obstacles.walls[i]), i, [&](const Rect& c) { return distance2(a, bb, c); },
-          [&](Point p) { return distance2(p, a, bb); });
+    visit(
+        segment_box(obstacles.walls[i]), i, [&](const Rect& c) { return squared_distance(a, bb, c); },
+        [&](Point p) { return point_segment_distance2(p, a, bb); });
   }
   for (uint32_t k = 0; k < obstacles.specials.size(); ++k) {
     const Rect& r = obstacles.specials[k].bounds;
-    visit(r, wall_count_ + k, [&](const Rect& c) { return distance2(r, c); }, [&](Point p) { return distance2(p, r); });
+    visit(
+        r, wall_count_ + k, [&](const Rect& c) { return squared_distance(r, c); },
+        [&](Point p) { return squared_distance(p, r); });
   }
   // Counting sort by cell, then each cell's short list by distance (ties by id, so
   // the build is deterministic).

@@ -15,8 +15,7 @@ GridRayCaster::GridRayCaster(const Map& map, RayCasterOptions options, GridOptio
 }
 
 size_t GridRayCaster::memory_bytes() const {
-  size_t n = grid_.memory_bytes() + obstacles_.specials.capacity() * sizeof(SpecialObstacle);
-  return n;
+  return grid_.memory_bytes() + obstacles_.specials.capacity() * sizeof(SpecialObstacle);
 }
 
 double GridRayCaster::cast_direction(Point o, Point d) const {

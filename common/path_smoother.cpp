@@ -8,8 +8,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kBisections = 12;       // corner cut: d known to dmax / 4096
-constexpr double kMinCutGain = 1e-4;  // metres: a cut that gains less is not worth a waypoint
+constexpr double kMinCutGain = 1e-3;  // metres: a cut that gains less is not worth a waypoint
 constexpr int kRoundingTries = 4;     // arc tangent lengths t, t/2, t/4, t/8
+constexpr double kMinTangent = 0.05;  // metres: a smaller arc is not worth its waypoints
 
 Point unit(Point v) { return (1 / norm(v)) * v; }
 
@@ -106,7 +107,7 @@ Path PathSmoother::rounded_corner(Point u, Point v, Point w, double max_tangent)
   const Point bisector = unit(du + dw);
   const int chords = std::max(1, static_cast<int>(std::ceil(turn / opt_.arc_step)));
   double t = std::min(opt_.corner_radius * tan_half, max_tangent);
-  for (int attempt = 0; attempt < kRoundingTries && t > 1e-3; ++attempt, t *= 0.5) {
+  for (int attempt = 0; attempt < kRoundingTries && t >= kMinTangent; ++attempt, t *= 0.5) {
     const double rho = t / tan_half;
     const Point a = v + t * du, b = v + t * dw;
     const Point c = v + std::sqrt(t * t + rho * rho) * bisector;

@@ -9,7 +9,8 @@ double RayCaster::cast(Point origin, double angle) const { return cast_direction
 
 void RayCaster::cast_scan(Point origin, double theta, const std::vector<double>& relative_angles,
                           double* ranges) const {
-  std::vector<Point> dirs(relative_angles.size());
+  thread_local std::vector<Point> dirs;
+  dirs.resize(relative_angles.size());
   scan_directions(theta, relative_angles, dirs.data());
   for (size_t i = 0; i < dirs.size(); ++i) ranges[i] = cast_direction(origin, dirs[i]);
 }

@@ -43,8 +43,7 @@ class RayCaster {
   // One scan: ranges[i] for the ray at theta + relative_angles[i]. The directions come
   // from scan_directions(), so every implementation casts exactly the same rays. The
   // default casts them one by one.
-  virtual void cast_scan(Point origin, double theta, const std::vector<double>& relative_angles,
-                         double* ranges) const;
+  virtual void cast_scan(Point origin, double theta, const std::vector<double>& relative_angles, double* ranges) const;
 
   virtual const RayCasterOptions& options() const = 0;
 };

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/segment_distance.h"
+
 namespace fleetmap {
 namespace {
 
@@ -20,18 +22,7 @@ Rect bounds_of(const Obstacle& o) {
 }
 
 Rect grow(const Rect& r, const Rect& by) {
-  return {std::min(r.xmin, by.xmin), std::min(r.ymin, by.ymin), std::max(r.xmax, by.xmax),
-          std::max(r.ymax, by.ymax)};
-}
-
-// Squared distance from p to segment pq.
-double distance2_to_segment(Point p, Point a, Point b) {
-  const Point e = b - a;
-  const double len2 = dot(e, e);
-  double u = len2 > 0 ? dot(p - a, e) / len2 : 0;
-  u = std::clamp(u, 0.0, 1.0);
-  const Point q = a + u * e - p;
-  return dot(q, q);
+  return {std::min(r.xmin, by.xmin), std::min(r.ymin, by.ymin), std::max(r.xmax, by.xmax), std::max(r.ymax, by.ymax)};
 }
 
 }  // namespace
@@ -83,7 +74,7 @@ RampRule::RampRule(const Obstacle& ramp, double laser_height)
 bool RampRule::contains(Point p) const {
   bool inside = false;
   for (const auto& [a, b] : ring_) {
-    if (distance2_to_segment(p, a, b) <= kRayTolerance * kRayTolerance) return true;
+    if (point_segment_distance2(p, a, b) <= kRayTolerance * kRayTolerance) return true;
     // Crossing number along +x, half-open in y.
     if ((a.y > p.y) != (b.y > p.y)) {
       const double x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);

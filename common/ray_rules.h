@@ -59,7 +59,7 @@ class RampRule {
  private:
   RampSurface surface_;
   double laser_height_;
-  double max_height_;                         // of the surface over the polygon
+  double max_height_;                          // of the surface over the polygon
   std::vector<std::pair<Point, Point>> ring_;  // closed outline (gaps of a cut ramp bridged)
 };
 
@@ -74,15 +74,15 @@ struct SpecialObstacle {
 
 // The obstacles of a map that can stop the laser, prepared for ray tests.
 struct LaserObstacles {
-  struct Entry {          // one map obstacle, in map order
-    Circle bound;         // minimum bounding circle of its vertices (seed 000 section 4.1)
+  struct Entry {                              // one map obstacle, in map order
+    Circle bound;                             // minimum bounding circle of its vertices (seed 000 section 4.1)
     uint32_t walls_begin = 0, walls_end = 0;  // its segments in walls, for ST 1-4
     int special = -1;                         // its index in specials, for ST 5-6
   };
   std::vector<RaySegment> walls;  // segments of ST 1-4 obstacles with h >= hL
   std::vector<SpecialObstacle> specials;
-  std::vector<Entry> obstacles;   // obstacles that can stop the laser at all
-  Rect bounds;                    // of everything above; empty when nothing can stop it
+  std::vector<Entry> obstacles;  // obstacles that can stop the laser at all
+  Rect bounds;                   // of everything above; empty when nothing can stop it
 };
 
 // Throws std::invalid_argument naming the obstacle when a ramp's encoding is wrong.

@@ -25,12 +25,12 @@ inline constexpr double kRayTolerance = 1e-9;
 
 // A segment prepared for ray tests: everything that depends only on the segment.
 struct RaySegment {
-  Point a;             // start
-  Point e;             // b - a
-  double inv_len2;     // 1 / |e|^2
-  double tol_u;        // kRayTolerance / |e|: slack on the segment parameter
-  double tol_cross;    // kRayTolerance * |e|: slack on cross products with e
-  double parallel;     // 1e-12 * |e|: |cross(d, e)| below this is parallel
+  Point a;           // start
+  Point e;           // b - a
+  double inv_len2;   // 1 / |e|^2
+  double tol_u;      // kRayTolerance / |e|: slack on the segment parameter
+  double tol_cross;  // kRayTolerance * |e|: slack on cross products with e
+  double parallel;   // 1e-12 * |e|: |cross(d, e)| below this is parallel
 };
 
 RaySegment prepare_segment(Point a, Point b);

@@ -24,18 +24,27 @@ double RrtConnect::uniform() {
 }
 
 Point RrtConnect::random_config(const Tree& other) {
-  if (opt_.goal_bias > 0 && uniform() < opt_.goal_bias) return other.front().p;
+  if (opt_.goal_bias > 0 && uniform() < opt_.goal_bias) return other.vertices[0];
   const Rect& r = checker_.free_rect();
   const double u = uniform(), v = uniform();
   return {r.xmin + u * (r.xmax - r.xmin), r.ymin + v * (r.ymax - r.ymin)};
 }
 
-// Linear scan: trees on the real maps stay at a few hundred vertices (bench-planner).
-size_t RrtConnect::nearest(const Tree& t, Point q) const {
+void RrtConnect::Tree::reset(Point root) {
+  vertices.assign(1, root);
+  parent.assign(1, -1);
+}
+
+void RrtConnect::Tree::add(Point p, size_t parent_index) {
+  vertices.push_back(p);
+  parent.push_back(static_cast<int>(parent_index));
+}
+
+size_t RrtConnect::Tree::nearest(Point q) const {
   size_t best = 0;
   double best_d2 = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < t.size(); ++i) {
-    const Point d = t[i].p - q;
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    const Point d = vertices[i] - q;
     const double d2 = dot(d, d);
     if (d2 < best_d2) best_d2 = d2, best = i;
   }
@@ -43,8 +52,8 @@ size_t RrtConnect::nearest(const Tree& t, Point q) const {
 }
 
 RrtConnect::Status RrtConnect::extend(Tree& t, Point q, size_t* reached) {
-  const size_t near = nearest(t, q);
-  const Point from = t[near].p;
+  const size_t near = t.nearest(q);
+  const Point from = t.vertices[near];
   const double d = distance(from, q);
   if (d == 0) {  // q is already a vertex
     *reached = near;
@@ -53,7 +62,7 @@ RrtConnect::Status RrtConnect::extend(Tree& t, Point q, size_t* reached) {
   // NEW_CONFIG: at most one step towards q, along a clear motion.
   const Point to = d <= opt_.step ? q : from + (opt_.step / d) * (q - from);
   if (!checker_.motion_clear(from, to)) return Status::Trapped;
-  t.push_back({to, static_cast<int>(near)});
+  t.add(to, near);
   *reached = t.size() - 1;
   return d <= opt_.step ? Status::Reached : Status::Advanced;
 }
@@ -67,10 +76,10 @@ RrtConnect::Status RrtConnect::connect(Tree& t, Point q, size_t* reached) {
 
 Path RrtConnect::path(const Tree& from_start, size_t i, const Tree& from_goal, size_t j) const {
   Path p;
-  for (int k = static_cast<int>(i); k >= 0; k = from_start[k].parent) p.push_back(from_start[k].p);
+  for (int k = static_cast<int>(i); k >= 0; k = from_start.parent[k]) p.push_back(from_start.vertices[k]);
   std::reverse(p.begin(), p.end());
-  // from_goal[j] is the same point as from_start[i]: where the trees met.
-  for (int k = from_goal[j].parent; k >= 0; k = from_goal[k].parent) p.push_back(from_goal[k].p);
+  // Vertex j of from_goal is the same point as vertex i of from_start: where the trees met.
+  for (int k = from_goal.parent[j]; k >= 0; k = from_goal.parent[k]) p.push_back(from_goal.vertices[k]);
   return p;
 }
 
@@ -79,8 +88,8 @@ std::optional<Path> RrtConnect::solve(Point start, Point goal) {
   const auto t0 = Clock::now();
   stats_ = {};
   rng_.seed(opt_.seed);  // every solve starts afresh: same seed, same query, same path
-  start_tree_.assign(1, {start, -1});
-  goal_tree_.assign(1, {goal, -1});
+  start_tree_.reset(start);
+  goal_tree_.reset(goal);
   auto finish = [&](std::optional<Path> p) {
     stats_.start_tree = start_tree_.size();
     stats_.goal_tree = goal_tree_.size();
@@ -102,21 +111,13 @@ std::optional<Path> RrtConnect::solve(Point start, Point goal) {
     const Point q_rand = random_config(*b);
     size_t i_new = 0, i_met = 0;
     if (extend(*a, q_rand, &i_new) != Status::Trapped) {
-      const Point q_new = (*a)[i_new].p;
+      const Point q_new = a->vertices[i_new];
       if (connect(*b, q_new, &i_met) == Status::Reached)
         return finish(a == &start_tree_ ? path(*a, i_new, *b, i_met) : path(*b, i_met, *a, i_new));
     }
     std::swap(a, b);
   }
   return finish(std::nullopt);
-}
-
-std::vector<std::pair<Point, Point>> RrtConnect::tree_edges() const {
-  std::vector<std::pair<Point, Point>> edges;
-  for (const Tree* t : {&start_tree_, &goal_tree_})
-    for (const Node& n : *t)
-      if (n.parent >= 0) edges.emplace_back(n.p, (*t)[n.parent].p);
-  return edges;
 }
 
 }  // namespace fleetmap

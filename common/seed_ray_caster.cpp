@@ -11,9 +11,10 @@ void SeedRayCaster::cull(Point origin, std::vector<uint32_t>& kept) const {
   kept.clear();
   for (uint32_t k = 0; k < obstacles_.obstacles.size(); ++k) {
     const Circle& b = obstacles_.obstacles[k].bound;
-    // Two circles meet when their centres are no farther apart than the radii's sum.
+    // Two circles meet when their centres are no farther apart than the radii's sum;
+    // 1e-6 m covers the circle's own tolerance and the segment test's.
     const Point v = b.c - origin;
-    const double reach = b.r + options_.rmax + kRayTolerance;
+    const double reach = b.r + options_.rmax + 1e-6;
     if (dot(v, v) <= reach * reach) kept.push_back(k);
   }
 }

@@ -20,8 +20,7 @@ class SeedRayCaster : public RayCaster {
 
   double cast_direction(Point origin, Point dir) const override;
   // Culls once per scan, as the seed does per particle.
-  void cast_scan(Point origin, double theta, const std::vector<double>& relative_angles,
-                 double* ranges) const override;
+  void cast_scan(Point origin, double theta, const std::vector<double>& relative_angles, double* ranges) const override;
   const RayCasterOptions& options() const override { return options_; }
 
  private:

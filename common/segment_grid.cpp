@@ -3,27 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/rect_distance.h"
+
 namespace fleetmap {
 namespace {
 
 // A grid of more cells than this gets coarser cells instead (16 bytes a cell: 128 MiB).
 constexpr double kMaxCells = 8.0 * 1024 * 1024;
-
-// Squared distance from p to segment ab.
-double distance2(Point p, Point a, Point b) {
-  const Point e = b - a;
-  const double len2 = dot(e, e);
-  const double u = len2 > 0 ? std::clamp(dot(p - a, e) / len2, 0.0, 1.0) : 0.0;
-  const Point q = a + u * e - p;
-  return dot(q, q);
-}
-
-// Squared distance from p to rectangle r (0 inside).
-double distance2(Point p, const Rect& r) {
-  const double dx = std::max({r.xmin - p.x, 0.0, p.x - r.xmax});
-  const double dy = std::max({r.ymin - p.y, 0.0, p.y - r.ymax});
-  return dx * dx + dy * dy;
-}
 
 }  // namespace
 
@@ -33,15 +19,19 @@ SegmentGrid::SegmentGrid(const LaserObstacles& obstacles, double cell, double sk
   const Rect& b = obstacles.bounds;
   // One empty cell of margin all round: rays from outside enter through empty cells.
   const double w = b.xmax - b.xmin, h = b.ymax - b.ymin;
-  if ((w / cell_ + 3) * (h / cell_ + 3) > kMaxCells) cell_ = std::sqrt(w * h / kMaxCells) + cell_;
+  while ((w / cell_ + 3) * (h / cell_ + 3) > kMaxCells) cell_ *= 2;
   inv_cell_ = 1 / cell_;
   corner_ = {b.xmin - cell_, b.ymin - cell_};
   nx_ = static_cast<int>(std::floor(w * inv_cell_)) + 3;
   ny_ = static_cast<int>(std::floor(h * inv_cell_)) + 3;
   cells_.assign(static_cast<size_t>(nx_) * ny_, Cell{});
 
-  auto col = [&](double x) { return std::clamp(static_cast<int>(std::floor((x - corner_.x) * inv_cell_)), 0, nx_ - 1); };
-  auto row = [&](double y) { return std::clamp(static_cast<int>(std::floor((y - corner_.y) * inv_cell_)), 0, ny_ - 1); };
+  auto col = [&](double x) {
+    return std::clamp(static_cast<int>(std::floor((x - corner_.x) * inv_cell_)), 0, nx_ - 1);
+  };
+  auto row = [&](double y) {
+    return std::clamp(static_cast<int>(std::floor((y - corner_.y) * inv_cell_)), 0, ny_ - 1);
+  };
   auto index = [&](int ix, int iy) { return static_cast<size_t>(iy) * nx_ + ix; };
 
   // Walls: every cell whose square grown by kCellPad meets the segment, column by
@@ -63,8 +53,7 @@ SegmentGrid::SegmentGrid(const LaserObstacles& obstacles, double cell, double sk
         entries.emplace_back(static_cast<uint32_t>(index(ix, iy)), i);
     }
   }
-  std::stable_sort(entries.begin(), entries.end(),
-                   [](const auto& l, const auto& r) { return l.first < r.first; });
+  std::stable_sort(entries.begin(), entries.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
   walls_.reserve(entries.size());
   for (size_t k = 0; k < entries.size();) {
     Cell& c = cells_[entries[k].first];
@@ -98,7 +87,7 @@ SegmentGrid::SegmentGrid(const LaserObstacles& obstacles, double cell, double sk
     for (int iy = row(std::min(a.y, bb.y) - skip_cap); iy <= row(std::max(a.y, bb.y) + skip_cap); ++iy)
       for (int ix = col(std::min(a.x, bb.x) - skip_cap); ix <= col(std::max(a.x, bb.x) + skip_cap); ++ix) {
         double& v = d2[index(ix, iy)];
-        v = std::min(v, distance2(centre(ix, iy), a, bb));
+        v = std::min(v, point_segment_distance2(centre(ix, iy), a, bb));
       }
   }
   for (const SpecialObstacle& sp : obstacles.specials) {
@@ -106,7 +95,7 @@ SegmentGrid::SegmentGrid(const LaserObstacles& obstacles, double cell, double sk
     for (int iy = row(r.ymin - skip_cap); iy <= row(r.ymax + skip_cap); ++iy)
       for (int ix = col(r.xmin - skip_cap); ix <= col(r.xmax + skip_cap); ++ix) {
         double& v = d2[index(ix, iy)];
-        v = std::min(v, distance2(centre(ix, iy), r));
+        v = std::min(v, squared_distance(centre(ix, iy), r));
       }
   }
   const double half_diagonal = cell_ * std::sqrt(0.5);

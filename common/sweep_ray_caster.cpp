@@ -65,9 +65,9 @@ const BeamOrder& beam_order(const std::vector<double>& rel) {
   for (size_t k = 0; k < n; ++k) order.pseudo[k] = p[order.beam[k]];
   order.first.resize(BeamOrder::kBins + 1);
   for (int b = 0; b <= BeamOrder::kBins; ++b)
-    order.first[b] = static_cast<uint32_t>(std::lower_bound(order.pseudo.begin(), order.pseudo.end(),
-                                                            static_cast<double>(b) / BeamOrder::kBinsPerUnit) -
-                                           order.pseudo.begin());
+    order.first[b] = static_cast<uint32_t>(
+        std::lower_bound(order.pseudo.begin(), order.pseudo.end(), static_cast<double>(b) / BeamOrder::kBinsPerUnit) -
+        order.pseudo.begin());
   return order;
 }
 
@@ -88,6 +88,63 @@ void for_beams_between(const BeamOrder& order, double lo, double hi, F&& f) {
   } else {
     run(lo, hi);
   }
+}
+
+// One scan being swept: its origin, beams and the nearest hit so far per beam.
+struct Scan {
+  Point o;
+  const Point* dirs = nullptr;       // world directions, from scan_directions()
+  const BeamOrder* order = nullptr;  // the beams by angle in the robot's frame
+  double c = 1, s = 0;               // cos and sin of theta
+  double* ranges = nullptr;
+  size_t n = 0;
+  double reach = 0;  // rmax and a hair: nothing farther can shorten a range
+
+  Point to_robot(Point v) const { return {c * v.x + s * v.y, c * v.y - s * v.x}; }  // rotation by -theta
+  template <class Test>
+  void all_beams(Test&& t) const {
+    for (size_t j = 0; j < n; ++j) ranges[j] = std::min(ranges[j], t(dirs[j]));
+  }
+  // The beams within the pseudo-angle interval [lo, hi] whose range so far is longer
+  // than `nearest`.
+  template <class Test>
+  void beams_between(double lo, double hi, double nearest, Test&& t) const {
+    for_beams_between(*order, lo, hi, [&](uint32_t j) {
+      if (ranges[j] > nearest) ranges[j] = std::min(ranges[j], t(dirs[j]));
+    });
+  }
+};
+
+void sweep_wall(const Scan& scan, const RaySegment& w) {
+  const Point a = w.a - scan.o;
+  const double u = std::clamp(-dot(a, w.e) * w.inv_len2, 0.0, 1.0);
+  const Point q = a + u * w.e;  // the wall's point nearest the origin
+  const double d2 = dot(q, q);
+  if (d2 > scan.reach * scan.reach) return;  // every hit would be past rmax
+  auto test = [&](Point d) { return ray_segment_distance(w, scan.o, d); };
+  if (d2 <= kNear * kNear) return scan.all_beams(test);
+  // The wall's ends in the robot's frame, and the angle between them counter-clockwise:
+  // less than pi, since the origin is not on the wall.
+  const Point ar = scan.to_robot(a), er = scan.to_robot(w.e);
+  double pa = pseudo_angle(ar), pb = pseudo_angle(ar + er);
+  if (cross(ar, er) < 0) std::swap(pa, pb);
+  if (pb < pa) pb += 4;
+  // No hit on the wall is nearer than its nearest point, less the test's tolerance.
+  scan.beams_between(pa - kAngleSlack, pb + kAngleSlack, std::sqrt(d2) - 2 * kRayTolerance, test);
+}
+
+// Stairs and ramps stop rays only inside their bounding box: the beams within the angle
+// its circumscribed circle subtends (a pseudo-angle moves no faster than the angle).
+void sweep_special(const Scan& scan, const SpecialObstacle& sp) {
+  const Rect& b = sp.bounds;
+  const Point v = Point{(b.xmin + b.xmax) / 2, (b.ymin + b.ymax) / 2} - scan.o;
+  const double radius = std::hypot(b.xmax - b.xmin, b.ymax - b.ymin) / 2 + kRayTolerance;
+  const double dist = norm(v);
+  if (dist - radius > scan.reach) return;
+  auto test = [&](Point d) { return sp.distance(scan.o, d); };
+  if (dist <= radius + kNear) return scan.all_beams(test);
+  const double pc = pseudo_angle(scan.to_robot(v)), half = std::asin(radius / dist) + kAngleSlack;
+  scan.beams_between(pc - half, pc + half, dist - radius - 2 * kRayTolerance, test);
 }
 
 }  // namespace
@@ -123,48 +180,28 @@ double SweepRayCaster::cast_direction(Point o, Point d) const {
 void SweepRayCaster::cast_scan(Point o, double theta, const std::vector<double>& relative_angles,
                                double* ranges) const {
   const size_t n = relative_angles.size();
-  const double rmax = options_.rmax;
-  std::fill(ranges, ranges + n, rmax);  // the nearest hit so far, per beam
+  std::fill(ranges, ranges + n, options_.rmax);  // the nearest hit so far, per beam
   const std::span<const CandidateGrid::Candidate> near = candidates_.near(o);
   if (near.empty() || n == 0) return;
 
   thread_local std::vector<Point> dirs;
   dirs.resize(n);
   scan_directions(theta, relative_angles, dirs.data());
-  const BeamOrder& order = beam_order(relative_angles);
-  const double c = std::cos(theta), s = std::sin(theta);
-  const double reach2 = (rmax + CandidateGrid::kPad) * (rmax + CandidateGrid::kPad);
+  Scan scan;
+  scan.o = o;
+  scan.dirs = dirs.data();
+  scan.order = &beam_order(relative_angles);
+  scan.c = std::cos(theta);
+  scan.s = std::sin(theta);
+  scan.ranges = ranges;
+  scan.n = n;
+  scan.reach = options_.rmax + CandidateGrid::kPad;
   const uint32_t walls = candidates_.wall_count();
-
-  for (const CandidateGrid::Candidate& cand : near) {
-    const uint32_t id = cand.id;
-    if (id >= walls) {  // stairs and ramps: every beam
-      const SpecialObstacle& sp = obstacles_.specials[id - walls];
-      for (size_t j = 0; j < n; ++j) ranges[j] = std::min(ranges[j], sp.distance(o, dirs[j]));
-      continue;
-    }
-    const RaySegment& w = obstacles_.walls[id];
-    const Point a = w.a - o;
-    const double u = std::clamp(-dot(a, w.e) * w.inv_len2, 0.0, 1.0);
-    const Point q = a + u * w.e;  // the wall's point nearest the origin
-    const double d2 = dot(q, q);
-    if (d2 > reach2) continue;  // every hit would be past rmax
-    if (d2 <= kNear * kNear) {
-      for (size_t j = 0; j < n; ++j) ranges[j] = std::min(ranges[j], ray_segment_distance(w, o, dirs[j]));
-      continue;
-    }
-    // No hit on this wall can be nearer than this: beams already ending there skip it.
-    const double nearest = std::sqrt(d2) - 2 * kRayTolerance;
-    // The wall's ends in the robot's frame (rotated by -theta), and the angle between
-    // them, counter-clockwise: less than pi, since the origin is not on the wall.
-    const Point ar{c * a.x + s * a.y, c * a.y - s * a.x};
-    const Point er{c * w.e.x + s * w.e.y, c * w.e.y - s * w.e.x};
-    double pa = pseudo_angle(ar), pb = pseudo_angle(ar + er);
-    if (cross(ar, er) < 0) std::swap(pa, pb);
-    if (pb < pa) pb += 4;
-    for_beams_between(order, pa - kAngleSlack, pb + kAngleSlack, [&](uint32_t j) {
-      if (ranges[j] > nearest) ranges[j] = std::min(ranges[j], ray_segment_distance(w, o, dirs[j]));
-    });
+  for (const CandidateGrid::Candidate& c : near) {
+    if (c.id < walls)
+      sweep_wall(scan, obstacles_.walls[c.id]);
+    else
+      sweep_special(scan, obstacles_.specials[c.id - walls]);
   }
 }
 

@@ -25,8 +25,8 @@
 namespace fleetmap {
 
 struct SweepOptions {
-  double cell = 4.0;                  // metres (bench-raycast compares sizes)
-  size_t max_bytes = 64u << 20;       // budget of the candidate lists
+  double cell = 4.0;             // metres (bench-raycast compares sizes)
+  size_t max_bytes = 64u << 20;  // budget of the candidate lists
 };
 
 class SweepRayCaster : public RayCaster {
@@ -35,8 +35,7 @@ class SweepRayCaster : public RayCaster {
   SweepRayCaster(const Map& map, RayCasterOptions options, SweepOptions sweep = {});
 
   double cast_direction(Point origin, Point dir) const override;
-  void cast_scan(Point origin, double theta, const std::vector<double>& relative_angles,
-                 double* ranges) const override;
+  void cast_scan(Point origin, double theta, const std::vector<double>& relative_angles, double* ranges) const override;
   const RayCasterOptions& options() const override { return options_; }
 
   size_t memory_bytes() const;

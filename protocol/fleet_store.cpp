@@ -73,12 +73,11 @@ unsigned long long FleetStore::assign_goal(const std::string& robot, double x, d
   q << "INSERT INTO tasks (robot_id, goal_x, goal_y) VALUES (" << id << ", " << format_number(x) << ", "
     << format_number(y) << ")";
   const unsigned long long task = q.execute().insert_id();
-  // The previous open task: never pushed -> aborted now; pushed -> the server pushes Abort.
+  // The previous open task ends now: the new SetPosEnd replaces its goal on the robot (an
+  // Abort pushed after it would stop the robot on its way to the new goal).
   q.reset();
-  q << "UPDATE tasks SET state = IF(answer_id IS NULL, 'aborted', state), abort_requested_at = SYSDATE(6),"
-       " reason = 'replaced by task "
-    << task << "' WHERE robot_id = " << id << " AND id <> " << task
-    << " AND state IN ('assigned', 'acknowledged', 'active')";
+  q << "UPDATE tasks SET state = 'aborted', reason = 'replaced by task " << task << "' WHERE robot_id = " << id
+    << " AND id <> " << task << " AND state IN ('assigned', 'acknowledged', 'active')";
   q.execute();
   tx.commit();
   return task;

@@ -46,7 +46,8 @@ class FleetStore {
   std::vector<RobotStatus> status();
   unsigned robot_id(const std::string& name);  // throws RobotNotFound
 
-  // A new goal replaces the robot's open task (which becomes aborted, "replaced by task N").
+  // A new goal replaces the robot's open task, which becomes aborted ("replaced by task N")
+  // without an Abort push: the new SetPosEnd is what the robot acts on.
   unsigned long long assign_goal(const std::string& robot, double x, double y);
   // Asks the server to push Abort for the robot's open task; false when it has none.
   bool request_abort(const std::string& robot, const std::string& reason);

@@ -3,12 +3,14 @@
 # fleetmap-loadgen plays N robots (own account and connection each, plain SQL), first
 # against a minimal answering loop (the floor: the bare database path), then against the
 # real fleetmap-server, in the same run; then the servers' idle polling cost, then scaling.
+# Beside the server, "lean" rows: a batched prototype inside fleetmap-loadgen that does the
+# server's durable work in a few round trips per batch (what the proposals would reach).
 #
 #   scripts/bench-server.sh [options]
 #     --robots N          fleet size of phases 1-2 (default 200)
 #     --seconds S         measurement window of phases 1-2 (default 20)
 #     --scaling "LIST"    robot counts of phase 4 (default "200 400 600 1000")
-#     --scaling-seconds S window of each phase-4 run (default 12)
+#     --scaling-seconds S window of each phase-4 run (default 10)
 #     --procs "LIST"      server processes in phase 4 (default "1 2")
 #     --idle-seconds S    no-traffic window of phase 3 (default 10)
 #     --polls "LIST"      --poll-max-ms values of phase 3 (default "1 10 50")
@@ -16,6 +18,7 @@
 #     --phases "LIST"     any of floor server idle scaling (default all four)
 #     --server-flags "F"  extra flags for every fleetmap-server (e.g. "--workers 4")
 #     --long              longer windows: --seconds 60 --scaling-seconds 40 --idle-seconds 30
+#     --no-lean           skip the lean prototype rows
 #     --no-build          use the binaries in the build folder as they are
 # Environment: FLEETMAP_BUILD_DIR (default build), FLEETMAP_BENCH_PORT (default 33318).
 # Results: <build>/benchsrv/results-<time>.jsonl (one JSON line per run), tables at the end.
@@ -25,8 +28,8 @@ cd "$(dirname "$0")/.."
 BUILD="${FLEETMAP_BUILD_DIR:-build}"
 BIN="$BUILD/bin"
 
-ROBOTS=200 SECONDS_=20 SCALING="200 400 600 1000" SCALING_SECONDS=12 PROCS="1 2" IDLE_SECONDS=10
-POLLS="1 10 50" THREADS=8 PHASES="floor server idle scaling" SERVER_FLAGS="" BUILD_FIRST=1
+ROBOTS=200 SECONDS_=20 SCALING="200 400 600 1000" SCALING_SECONDS=10 PROCS="1 2" IDLE_SECONDS=10
+POLLS="1 10 50" THREADS=8 PHASES="floor server idle scaling" SERVER_FLAGS="" BUILD_FIRST=1 LEAN=1
 while [ $# -gt 0 ]; do
   case "$1" in
     --robots) ROBOTS="$2"; shift 2 ;;
@@ -41,7 +44,8 @@ while [ $# -gt 0 ]; do
     --server-flags) SERVER_FLAGS="$2"; shift 2 ;;
     --long) SECONDS_=60; SCALING_SECONDS=40; IDLE_SECONDS=30; shift ;;
     --no-build) BUILD_FIRST=0; shift ;;
-    -h|--help) sed -n '2,24p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --no-lean) LEAN=0; shift ;;
+    -h|--help) sed -n '2,28p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench-server: unknown option '$1' (--help)" >&2; exit 64 ;;
   esac
 done
@@ -114,7 +118,14 @@ LG=("$BIN/fleetmap-loadgen" --password-dir "$PWDIR" --map UT_Campus --results "$
 WORKERS=$( "$BIN/fleetmap-server" --check $SERVER_FLAGS | sed -n 's/.*, \([0-9]*\) workers.*/\1/p' )
 
 # Undelivered traffic of an earlier run must not be the next run's load.
-clear_mailboxes() { sql "DELETE FROM rr; DELETE FROM sa"; }
+clear_mailboxes() {
+  local i
+  for i in 1 2 3 4 5; do
+    sql "DELETE FROM rr; DELETE FROM sa" 2>/dev/null && return 0
+    sleep 1
+  done
+  sql "DELETE FROM rr; DELETE FROM sa"
+}
 
 start_servers() {  # PROCS [flags...]
   local n="$1" i; shift
@@ -149,6 +160,10 @@ if has_phase server; then
   run_lg "$LOG" --mode server --robots "$ROBOTS" --seconds "$SECONDS_" --phase server --label "$ROBOTS robots" \
     --server-pid "$(pids)" --server-procs 1 --workers "$WORKERS"
   stop_servers
+  if [ "$LEAN" = 1 ]; then
+    clear_mailboxes
+    run_lg "$LOG" --mode lean --robots "$ROBOTS" --seconds "$SECONDS_" --phase server --label "lean $ROBOTS robots"
+  fi
 fi
 
 if has_phase idle; then
@@ -163,23 +178,39 @@ if has_phase idle; then
 fi
 
 if has_phase scaling; then
-  printf '\n######## 4. scaling\n'
+  printf '\n######## 4. scaling (each robot count: floor, server with each process count, lean; interleaved)\n'
+  over() {  # the last run's worst answered p99 is over 20 ms (or missing)
+    local p99; p99="$(worst_p99 "$LOG")"
+    if [ -z "$p99" ] || awk -v p="$p99" 'BEGIN { exit !(p > 20) }'; then
+      echo "bench-server: p99 ${p99:-?} ms > 20 ms at $1; this series stops here"
+      return 0
+    fi
+    return 1
+  }
+  SERIES="floor"
+  for procs in $PROCS; do SERIES="$SERIES p$procs"; done
+  [ "$LEAN" = 1 ] && SERIES="$SERIES lean"
   for n in $SCALING; do
-    clear_mailboxes
-    run_lg "$LOG" --mode floor --robots "$n" --seconds "$SCALING_SECONDS" --phase scaling --label "floor $n"
-  done
-  for procs in $PROCS; do
-    for n in $SCALING; do
-      start_servers "$procs"
-      run_lg "$LOG" --mode server --robots "$n" --seconds "$SCALING_SECONDS" --phase scaling \
-        --label "$procs proc $n robots" --server-pid "$(pids)" --server-procs "$procs" --workers "$WORKERS"
-      stop_servers
-      p99="$(worst_p99 "$LOG")"
-      if [ -z "$p99" ] || awk -v p="$p99" 'BEGIN { exit !(p > 20) }'; then
-        echo "bench-server: p99 ${p99:-?} ms > 20 ms at $n robots with $procs process(es); larger fleets skipped"
-        break
-      fi
+    [ -n "${SERIES// /}" ] || break
+    NEXT=""
+    for s in $SERIES; do
+      case "$s" in
+        floor)
+          clear_mailboxes
+          run_lg "$LOG" --mode floor --robots "$n" --seconds "$SCALING_SECONDS" --phase scaling --label "floor $n" ;;
+        lean)
+          clear_mailboxes
+          run_lg "$LOG" --mode lean --robots "$n" --seconds "$SCALING_SECONDS" --phase scaling --label "lean $n" ;;
+        p*)
+          procs="${s#p}"
+          start_servers "$procs"
+          run_lg "$LOG" --mode server --robots "$n" --seconds "$SCALING_SECONDS" --phase scaling \
+            --label "$procs proc $n robots" --server-pid "$(pids)" --server-procs "$procs" --workers "$WORKERS"
+          stop_servers ;;
+      esac
+      over "$n robots ($s)" || NEXT="$NEXT $s"
     done
+    SERIES="$NEXT"
   done
 fi
 

@@ -99,7 +99,7 @@ int run_plan(const PlanArgs& a, CliContext& ctx) {
       return exit_code::kNoPath;
     case PlanStatus::NoPath:
       std::fprintf(stderr,
-                   "fleetmap plan: no path from %s to %s on '%s' for a robot of radius %g m: RRT-Connect's trees did "
+                   "fleetmap plan: no path found from %s to %s on '%s' for a robot of radius %g m: RRT-Connect's trees did "
                    "not meet in %zu iterations (%.2f s%s)\n",
                    describe(start).c_str(), describe(goal).c_str(), name.c_str(), a.planner.radius, r.rrt.iterations,
                    r.rrt.seconds, r.rrt.timed_out ? ", time limit reached; try a larger --max-time" : "");

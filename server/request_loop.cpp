@@ -24,9 +24,15 @@ bool connection_lost(unsigned errnum) { return errnum >= 2000 && errnum < 3000; 
 
 }  // namespace
 
-RequestLoop::RequestLoop(DbSettings db, const ServerConfig& config, MapCache& cache, const std::atomic<bool>& stop,
-                         int worker, bool housekeeping)
-    : db_(std::move(db)), config_(config), cache_(cache), stop_(stop), worker_(worker), housekeeping_(housekeeping) {}
+RequestLoop::RequestLoop(DbSettings db, const ServerConfig& config, MapCache& cache, PlannerCache& planners,
+                         const std::atomic<bool>& stop, int worker, bool housekeeping)
+    : db_(std::move(db)),
+      config_(config),
+      cache_(cache),
+      planners_(planners),
+      stop_(stop),
+      worker_(worker),
+      housekeeping_(housekeeping) {}
 
 void RequestLoop::connect_with_retry() {
   double wait_s = 0.1;
@@ -129,7 +135,7 @@ size_t RequestLoop::serve_batch() {
 
 void RequestLoop::handle(RobotRow& robot, const Request& req, RequestQueue& queue, RobotStore& robots) {
   MapStore maps(*conn_);
-  HandlerContext ctx{config_, robots, maps, cache_, robot, req, {}, {}};
+  HandlerContext ctx{config_, robots, maps, cache_, planners_, robot, req, {}, {}};
   // Each request in a savepoint: a database error in one handler undoes that request's
   // work only, and the robot gets an Error instead.
   execute(*conn_, "SAVEPOINT request");
@@ -209,7 +215,7 @@ size_t RequestLoop::mark_lost_robots() {
     std::optional<RobotRow> robot = robots.claim(id);
     if (!robot) continue;
     robots.set_state(id, "lost");
-    if (auto task = robots.open_task(id)) robots.set_task_state(task->id, "failed", "robot lost");
+    while (auto task = robots.open_task(id)) robots.set_task_state(task->id, "failed", "robot lost");
     tx.commit();
     spdlog::warn("robot {} is lost (silent for more than {:.1f} s)", robot->db_user, silent_s);
     ++lost;

@@ -17,14 +17,15 @@
 #include "protocol/request_queue.h"
 #include "protocol/robot_store.h"
 #include "server/map_cache.h"
+#include "server/planner_cache.h"
 #include "server/server_config.h"
 
 namespace fleetmap {
 
 class RequestLoop {
  public:
-  RequestLoop(DbSettings db, const ServerConfig& config, MapCache& cache, const std::atomic<bool>& stop, int worker,
-              bool housekeeping);
+  RequestLoop(DbSettings db, const ServerConfig& config, MapCache& cache, PlannerCache& planners,
+              const std::atomic<bool>& stop, int worker, bool housekeeping);
   void run();  // until stop is set; finishes the transaction in hand first
 
   // One pass over waiting requests; returns how many requests it handled (for tests and
@@ -40,6 +41,7 @@ class RequestLoop {
   DbSettings db_;
   const ServerConfig& config_;
   MapCache& cache_;
+  PlannerCache& planners_;
   const std::atomic<bool>& stop_;
   int worker_;
   bool housekeeping_;

@@ -34,6 +34,7 @@ void ServerConfig::apply(const std::map<std::string, std::string>& s) {
     else if (k == "max_window_m") max_window_m = positive(k, v);
     else if (k == "max_image_bytes") max_image_bytes = static_cast<size_t>(positive(k, v));
     else if (k == "goal_tolerance_m") goal_tolerance_m = positive(k, v);
+    else if (k == "robot_radius_m") robot_radius_m = positive(k, v);
     else if (k == "lock_wait_timeout_s") lock_wait_timeout_s = static_cast<int>(positive(k, v));
     else throw std::invalid_argument("[server] unknown setting '" + k + "'");
   }

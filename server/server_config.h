@@ -18,6 +18,7 @@ struct ServerConfig {
   double max_window_m = 1000;         // GetMap w and h are capped to this
   size_t max_image_bytes = 8u << 20;  // SendImage payload limit
   double goal_tolerance_m = 0.5;      // Stopped within this of the goal -> task done
+  double robot_radius_m = 0.3;        // GetPath plans for a disc of this radius
   int lock_wait_timeout_s = 1;        // then find and end the robot connection that blocks
 
   // Applies "key = value" settings; throws std::invalid_argument naming a bad key or value.

@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
   setting("--max-window", "max_window_m", "GetMap sides are capped to this, m (default 1000)");
   setting("--max-image-bytes", "max_image_bytes", "SendImage payload limit (default 8 MiB)");
   setting("--goal-tolerance", "goal_tolerance_m", "Stopped within this of the goal -> task done, m (default 0.5)");
+  setting("--robot-radius", "robot_radius_m", "radius robots are planned with (GetPath), m (default 0.3)");
   std::string log_level = "info";
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error")->capture_default_str();
   bool check = false;
@@ -80,9 +81,10 @@ int main(int argc, char** argv) {
   std::signal(SIGINT, on_signal);
   spdlog::info("fleetmap-server starting: {} worker(s), database {}", cfg.workers, describe(db));
   MapCache cache;
+  PlannerCache planners;
   std::vector<std::thread> workers;
   for (int i = 0; i < cfg.workers; ++i)
-    workers.emplace_back([&, i] { RequestLoop(db, cfg, cache, g_stop, i, i == 0).run(); });
+    workers.emplace_back([&, i] { RequestLoop(db, cfg, cache, planners, g_stop, i, i == 0).run(); });
   workers.emplace_back([&] { StallGuard(db, g_stop, std::chrono::milliseconds(250)).run(); });
   for (auto& t : workers) t.join();
   spdlog::info("fleetmap-server stopped");

@@ -34,7 +34,7 @@ BEGIN
   -- A robot added again keeps its id and its history.
   INSERT INTO robots (db_user, map_id) VALUES (p_name, v_map)
     ON DUPLICATE KEY UPDATE removed_at = NULL, map_id = v_map, state = 'offline', magic = NULL, session_at = NULL,
-      ini_x = NULL, ini_y = NULL, ini_theta = NULL;
+      ini_x = NULL, ini_y = NULL, ini_theta = NULL, x = NULL, y = NULL, theta = NULL, v = NULL, last_seen = NULL;
 END//
 
 CREATE OR REPLACE PROCEDURE robot_remove(IN p_name VARCHAR(80))

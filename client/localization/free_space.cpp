@@ -1,6 +1,7 @@
 #include "client/localization/free_space.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace fleetmap::localization {
 
@@ -18,6 +19,7 @@ bool is_closed_chain(const Obstacle& o) {
 }  // namespace
 
 FreeSpace::FreeSpace(const Map& map) : rect_(map.border.rect()) {
+  area_ = std::max(0.0, rect_.xmax - rect_.xmin) * std::max(0.0, rect_.ymax - rect_.ymin);
   for (const Obstacle& o : map.obstacles) {
     if (o.type != ShapeType::ClosedPolygon && o.type != ShapeType::ClosedCurved) continue;
     if (!is_closed_chain(o)) continue;
@@ -25,11 +27,14 @@ FreeSpace::FreeSpace(const Map& map) : rect_(map.border.rect()) {
     if (!solid) continue;
     Solid q;
     std::vector<Point> pts;
+    double twice_area = 0;  // shoelace
     for (const Segment& s : o.segments) {
       q.a.push_back(s.a);
       q.b.push_back(s.b);
       pts.push_back(s.a);
+      twice_area += cross(s.a, s.b);
     }
+    area_ = std::max(0.0, area_ - std::fabs(twice_area) / 2);
     q.bound = minimum_bounding_circle(pts);
     solids_.push_back(std::move(q));
   }

@@ -25,6 +25,8 @@ class FreeSpace {
   // max_tries misses (a map that is nearly all obstacle) the last point drawn.
   Point sample(std::mt19937_64& rng, int max_tries = 1000) const;
 
+  // Square metres: the border's area less the enclosed obstacles' (overlaps counted twice).
+  double area() const { return area_; }
   const Rect& rect() const { return rect_; }
   size_t solid_count() const { return solids_.size(); }  // closed obstacles that enclose
 
@@ -34,6 +36,7 @@ class FreeSpace {
     std::vector<Point> a, b;  // segment ends
   };
   Rect rect_;
+  double area_ = 0;
   std::vector<Solid> solids_;
 };
 

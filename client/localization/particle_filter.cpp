@@ -28,6 +28,16 @@ std::mt19937_64 seeded(uint64_t seed, uint64_t stream) {
 
 }  // namespace
 
+ParticleFilterOptions ParticleFilterOptions::robust() {
+  ParticleFilterOptions o;
+  o.sensor.combination = BeamCombination::Product;
+  o.sensor.gamma = 0.1;
+  o.tempering_ess = 0.3;
+  o.tempering_stages = 3;
+  o.global_density = 0.3;
+  return o;
+}
+
 ParticleFilter::ParticleFilter(const Map& map, ParticleFilterOptions options)
     : ParticleFilter(map, std::make_shared<GridRayCaster>(map, options.laser), options) {}
 
@@ -54,7 +64,8 @@ void ParticleFilter::set_map(const Map& map, std::shared_ptr<const RayCaster> ca
 }
 
 void ParticleFilter::init_global(std::optional<double> compass) {
-  const size_t n = std::max(options_.particles, options_.global_particles);
+  const size_t n = std::max(options_.particles,
+                            static_cast<size_t>(std::max(0.0, options_.global_density) * free_space_->area()));
   poses_.resize(n);
   std::uniform_real_distribution<double> any_heading(-kPi, kPi);
   for (Pose& p : poses_) {

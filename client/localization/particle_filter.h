@@ -3,7 +3,7 @@
 // tracking on the segment map: initialise, then per laser scan predict (odometry),
 // update (eq. 4-6 on synthetic rays) and resample.
 //
-//  * Global initialisation: NP particles (or global_particles, more, on a map larger than
+//  * Global initialisation: NP particles (more with global_density, on a map larger than
 //    the seed's) uniform over free space (free_space.h: the border minus closed
 //    obstacles), headings from the compass prior (+-3 degrees).
 //  * predict: each particle moves by its own draw of the odometry model (motion_model.h).
@@ -11,12 +11,18 @@
 //    GridRayCaster unless one is given) and its weight is multiplied by eq. (6)
 //    (sensor_model.h), optionally by the compass term; particles are split over
 //    `threads` threads in fixed chunks.
-//  * resampling when the effective sample size falls below resample_threshold * NP:
+//  * tempering (off in the seed's options): when one scan would leave fewer than
+//    tempering_ess * N particles effective, only its power phi < 1 is applied, the
+//    largest that keeps them (adaptive tempering, Jasra et al. 2011); with
+//    tempering_stages > 1 the rest of the exponent is applied after resampling, on new
+//    rays (annealing, Deutscher et al. 2000). It keeps a global cloud from collapsing on
+//    the first particle that happens to fit; a converged cloud takes every scan whole.
+//  * resampling when the effective sample size falls below resample_threshold * N:
 //    low-variance (NP kept), or KLD sampling when adaptive (tracking; the count follows
 //    the spread of the cloud between kld.min_particles and kld.max_particles). Then
 //    roughening (Gordon, Salmond & Smith 1993): each resampled particle is jittered by
-//    N(0, K s N^(-1/3)) per dimension, s the cloud's standard deviation in it, so that
-//    copies of one particle do not stay identical while the robot stands still.
+//    N(0, K s N^(-1/3)) per dimension, s the cloud's standard deviation in it (capped),
+//    so that copies of one particle do not stay identical while the robot stands still.
 //  * estimate: weighted mean (circular mean for theta) and spread, the standard
 //    deviations of position (sqrt(var x + var y)) and of heading (circular). While the
 //    cloud still holds several hypotheses their mean lies between them, so the pose
@@ -24,8 +30,8 @@
 //    3 x 3 block of cluster_cell cells holding the most weight.
 //
 // Reproducible: every random draw comes from std::mt19937_64 generators seeded from
-// `seed` (one per thread chunk, one for the sequential steps); the same seed, options
-// and inputs give the same particles. The filter holds no clock.
+// `seed` (one per thread chunk, one for the sequential steps); the same seed, options,
+// thread count and inputs give the same particles. The filter holds no clock.
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -44,32 +50,38 @@
 namespace fleetmap::localization {
 
 struct ParticleFilterOptions {
-  size_t particles = 6000;          // NP (seed 000 section 4.1)
-  // Particles drawn by init_global when larger than NP; the first resampling brings the
-  // set back to NP. For maps much larger than the seed's 100 m x 100 m (0 or <= NP: NP).
-  size_t global_particles = 0;
-  int beams = 131;                  // NL
-  double fov = kPi;                 // the NL beams spread evenly over 180 degrees
+  size_t particles = 6000;            // NP (seed 000 section 4.1)
+  int beams = 131;                    // NL
+  double fov = kPi;                   // the NL beams spread evenly over 180 degrees
   RayCasterOptions laser{0.3, 15.0};  // hL and RMAX; RMAX is also the sensor model's
-  SensorModelOptions sensor;        // alpha 1, beta 0.1, sigma_m 0.5 m
+  SensorModelOptions sensor;          // alpha 1, beta 0.1, sigma_m 0.5 m, eq. (6)
   MotionNoise motion;
   double compass_half_width = deg2rad(3.0);
-  bool compass_weight = true;       // weigh by the compass at each update given one
-  double resample_threshold = 0.5;  // resample when N_eff < this * N (1: every update)
-  // Adaptive tempering: when a scan's likelihood would leave fewer than this share of
-  // the particles effective, only its power phi < 1 is applied (0 disables).
-  double tempering_ess = 0.0;
-  int tempering_stages = 1;         // passes per scan (new rays each) to spend phi up to 1
-  double roughening = 0.2;          // K; 0 disables
-  double roughening_max_xy = 0.2;   // metres: caps of the jitter's standard deviation, so
-  double roughening_max_theta = deg2rad(1.0);  // a cloud of far hypotheses is not blurred
-  bool adaptive = false;            // KLD sampling instead of a fixed NP
+  bool compass_weight = true;         // weigh by the compass at each update given one
+  // init_global draws max(NP, global_density * free area) particles; the first
+  // resampling brings the set back to NP. The seed's 6000 over 100 m x 100 m are 0.6
+  // per square metre; the campus (0.2 km2) at that density would be 128 000. 0: NP.
+  double global_density = 0;
+  double resample_threshold = 0.5;    // resample when N_eff < this * N (1: every update)
+  double tempering_ess = 0;           // 0: no tempering (the seed)
+  int tempering_stages = 1;
+  double roughening = 0.2;            // K; 0 disables
+  double roughening_max_xy = 0.2;     // metres: caps of the jitter's standard deviation,
+  double roughening_max_theta = deg2rad(1.0);  // so far-apart hypotheses do not blur
+  bool adaptive = false;              // KLD sampling instead of a fixed NP
   KldOptions kld;
   double cluster_cell = 1.0;              // metres, for PoseEstimate::pose
   double converged_xy = 0.5;              // metres of spread under which
   double converged_theta = deg2rad(5.0);  // and radians: PoseEstimate::converged
   int threads = 2;
   uint64_t seed = 1;
+
+  // The seed's filter: the defaults above, eq. (5)-(6) as written.
+  static ParticleFilterOptions seed_model() { return {}; }
+  // What bench-localization found to localize globally on the real maps: the product of
+  // the beams with a floor (gamma 0.1) instead of eq. (6), adaptive tempering (ESS 30 %,
+  // 3 stages), and 0.3 particles per square metre at initialisation.
+  static ParticleFilterOptions robust();
 };
 
 struct PoseEstimate {

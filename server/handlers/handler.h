@@ -11,6 +11,7 @@
 #include "protocol/request_queue.h"
 #include "protocol/robot_store.h"
 #include "server/map_cache.h"
+#include "server/planner_cache.h"
 #include "server/server_config.h"
 
 namespace fleetmap {
@@ -20,6 +21,7 @@ struct HandlerContext {
   RobotStore& robots;
   MapStore& maps;
   MapCache& map_cache;
+  PlannerCache& planners;
   RobotRow& robot;
   const Request& request;
   Json params;

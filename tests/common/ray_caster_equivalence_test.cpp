@@ -44,8 +44,10 @@ Obstacle generated_stairs(int id, Point base, Point u, int n, double rise, doubl
   for (int k = 0; k <= n; ++k) {
     const Point mid = along(base, u, 0.3 * k);
     const Point l = along(mid, v, w / 2), r = along(mid, v, -w / 2);
-    if (k < n) o.segments.push_back({r, l, rise * (k + 1), 1, "step", ""});
-    else o.segments.push_back({l, r, 0, 1, "step", ""});  // closing, the other way
+    if (k < n)
+      o.segments.push_back({r, l, rise * (k + 1), 1, "step", ""});
+    else
+      o.segments.push_back({l, r, 0, 1, "step", ""});  // closing, the other way
   }
   o.compute_bound();
   return o;
@@ -73,8 +75,8 @@ Map varied(Map m, unsigned seed) {
   for (Obstacle& o : m.obstacles)
     for (Segment& s : o.segments) s.h = heights[rng() % 4];
   const Rect r = m.border.rect();
-  std::uniform_real_distribution<double> ux(r.xmin + 10, r.xmax - 10), uy(r.ymin + 10, r.ymax - 10),
-      ua(-kPi, kPi), u01(0, 1);
+  std::uniform_real_distribution<double> ux(r.xmin + 10, r.xmax - 10), uy(r.ymin + 10, r.ymax - 10), ua(-kPi, kPi),
+      u01(0, 1);
   int id = 1000000;
   for (int k = 0; k < 40; ++k) {
     const double a = ua(rng);
@@ -112,8 +114,9 @@ Candidate fast() {
   return {"fast", [](const Map& m, RayCasterOptions o) { return make_fast_ray_caster(m, o); }};
 }
 Candidate sweep(double cell) {
-  return {"sweep " + std::to_string(cell).substr(0, 4) + " m",
-          [cell](const Map& m, RayCasterOptions o) { return std::make_unique<SweepRayCaster>(m, o, SweepOptions{cell}); }};
+  return {"sweep " + std::to_string(cell).substr(0, 4) + " m", [cell](const Map& m, RayCasterOptions o) {
+            return std::make_unique<SweepRayCaster>(m, o, SweepOptions{cell});
+          }};
 }
 Candidate grid(double cell, bool skip) {
   return {"grid " + std::to_string(cell).substr(0, 4) + " m" + (skip ? "" : " no skip"),
@@ -203,7 +206,8 @@ TEST(RayCasterEquivalence, RealMapsWithHeightsStairsAndRamps) {
 
 TEST(RayCasterEquivalence, ExampleMap) {
   const Map m = read_seed_file(kExample);
-  for (double hl : {0.1, 0.3, 1.0, 3.0}) expect_equivalent("example-campus", m, hl, {fast(), grid(1, true)}, kRays, 0.2);
+  for (double hl : {0.1, 0.3, 1.0, 3.0})
+    expect_equivalent("example-campus", m, hl, {fast(), grid(1, true)}, kRays, 0.2);
   // A window cuts the stairs and the ramp (SPEC 5.4): open outlines, a lost closing.
   const Map w = clip_map(m, window_rect(m.border, {28, 15}, 38, 12));
   for (double hl : {0.1, 0.3}) expect_equivalent("example window", w, hl, {fast(), grid(1, true)}, kRays, 0.1);

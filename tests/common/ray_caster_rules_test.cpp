@@ -22,8 +22,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kEps = 1e-9;
 
-Obstacle make_obstacle(int id, ShapeType type, std::vector<std::array<double, 5>> segs,
-                       std::string semantic = "test") {
+Obstacle make_obstacle(int id, ShapeType type, std::vector<std::array<double, 5>> segs, std::string semantic = "test") {
   Obstacle o;
   o.id = id;
   o.type = type;
@@ -67,11 +66,17 @@ std::vector<Kind> kinds() {
       {"seed", [](const Map& m, RayCasterOptions o) { return std::make_unique<SeedRayCaster>(m, o); }},
       {"grid", [](const Map& m, RayCasterOptions o) { return std::make_unique<GridRayCaster>(m, o); }},
       {"grid_plain",
-       [](const Map& m, RayCasterOptions o) { return std::make_unique<GridRayCaster>(m, o, GridOptions{1.0, false}); }},
+       [](const Map& m, RayCasterOptions o) {
+         return std::make_unique<GridRayCaster>(m, o, GridOptions{1.0, false});
+       }},
       {"grid_fine",
-       [](const Map& m, RayCasterOptions o) { return std::make_unique<GridRayCaster>(m, o, GridOptions{0.25, true}); }},
+       [](const Map& m, RayCasterOptions o) {
+         return std::make_unique<GridRayCaster>(m, o, GridOptions{0.25, true});
+       }},
       {"grid_coarse",
-       [](const Map& m, RayCasterOptions o) { return std::make_unique<GridRayCaster>(m, o, GridOptions{7.0, true}); }},
+       [](const Map& m, RayCasterOptions o) {
+         return std::make_unique<GridRayCaster>(m, o, GridOptions{7.0, true});
+       }},
       {"sweep", [](const Map& m, RayCasterOptions o) { return std::make_unique<SweepRayCaster>(m, o); }},
       {"sweep_fine",
        [](const Map& m, RayCasterOptions o) { return std::make_unique<SweepRayCaster>(m, o, SweepOptions{0.25}); }},
@@ -93,8 +98,8 @@ TEST_P(RayRules, WallAtKnownDistance) {
   EXPECT_NEAR(rc->cast({0, 0}, 0), 5, kEps);
   EXPECT_NEAR(rc->cast({0, 0}, kPi / 4), 5 * std::sqrt(2.0), kEps);
   EXPECT_NEAR(rc->cast({2, 3}, std::atan2(-4.0, 3.0)), 5, kEps);  // 3-4-5 triangle: hits (5, -1)
-  EXPECT_EQ(rc->cast({0, 0}, kPi), 15);                            // nothing behind
-  EXPECT_NEAR(rc->cast({9, 0}, kPi), 4, kEps);                     // from the other side
+  EXPECT_EQ(rc->cast({0, 0}, kPi), 15);                           // nothing behind
+  EXPECT_NEAR(rc->cast({9, 0}, kPi), 4, kEps);                    // from the other side
 }
 
 TEST_P(RayRules, WallLowerThanTheLaserIsPassed) {
@@ -103,17 +108,17 @@ TEST_P(RayRules, WallLowerThanTheLaserIsPassed) {
   EXPECT_NEAR(make(m, 0.3)->cast({0, 0}, 0), 8, kEps);  // 0.2 m wall passed
   EXPECT_NEAR(make(m, 0.2)->cast({0, 0}, 0), 5, kEps);  // h = hL stops (h >= hL)
   EXPECT_NEAR(make(m, 0.1)->cast({0, 0}, 0), 5, kEps);
-  EXPECT_EQ(make(m, 2.5)->cast({0, 0}, 0), 15);         // laser over both
+  EXPECT_EQ(make(m, 2.5)->cast({0, 0}, 0), 15);  // laser over both
 }
 
 TEST_P(RayRules, StairsFromDownstairsStopAtTheFirstStepHigherThanTheLaser) {
   const Map m = make_map({example_stairs()});
   // Straight up from below: steps at y = 18.5 (0.15 m), 18.8 (0.3), 19.1 (0.45) ...
-  EXPECT_NEAR(make(m, 0.3)->cast({47, 15}, kPi / 2), 4.1, kEps);   // 0.15 and 0.3 passed
-  EXPECT_NEAR(make(m, 0.1)->cast({47, 15}, kPi / 2), 3.5, kEps);   // first step
-  EXPECT_NEAR(make(m, 0.5)->cast({47, 15}, kPi / 2), 4.4, kEps);   // 0.6 m step
-  EXPECT_NEAR(make(m, 0.7)->cast({47, 15}, kPi / 2), 4.7, kEps);   // 0.75 m step
-  EXPECT_EQ(make(m, 0.75)->cast({47, 15}, kPi / 2), 15);           // no step higher: passes
+  EXPECT_NEAR(make(m, 0.3)->cast({47, 15}, kPi / 2), 4.1, kEps);  // 0.15 and 0.3 passed
+  EXPECT_NEAR(make(m, 0.1)->cast({47, 15}, kPi / 2), 3.5, kEps);  // first step
+  EXPECT_NEAR(make(m, 0.5)->cast({47, 15}, kPi / 2), 4.4, kEps);  // 0.6 m step
+  EXPECT_NEAR(make(m, 0.7)->cast({47, 15}, kPi / 2), 4.7, kEps);  // 0.75 m step
+  EXPECT_EQ(make(m, 0.75)->cast({47, 15}, kPi / 2), 15);          // no step higher: passes
   // Obliquely from below-left: 30 degrees over +x from (40, 17): meets y = 19.1 at
   // t = 2.1 / sin 30 = 4.2, x = 40 + 4.2 cos 30 = 43.64 < 44: outside. The 0.6 m step
   // y = 19.4: t = 4.8, x = 44.157, inside.
@@ -124,8 +129,7 @@ TEST_P(RayRules, StairsFromUpstairsAreCrossedWhole) {
   const Map m = make_map({example_stairs(), make_obstacle(2, ShapeType::OpenPolygon, {{30, 10, 60, 10, 2}})});
   // From the top landing down: the closing segment (y = 20) comes first, every step is
   // crossed, and the wall at y = 10 stops the ray 12 m on.
-  for (double hl : {0.1, 0.3, 0.5})
-    EXPECT_NEAR(make(m, hl)->cast({47, 22}, -kPi / 2), 12, kEps) << hl;
+  for (double hl : {0.1, 0.3, 0.5}) EXPECT_NEAR(make(m, hl)->cast({47, 22}, -kPi / 2), 12, kEps) << hl;
   // From below the same ray up stops on a step.
   EXPECT_NEAR(make(m, 0.1)->cast({47, 12}, kPi / 2), 6.5, kEps);
   // Standing on the stairs (between y = 19.1 and 19.4), the first segment met in
@@ -171,10 +175,10 @@ TEST_P(RayRules, RangeIsCappedAtRmax) {
   const Map m = make_map({make_obstacle(1, ShapeType::OpenPolygon, {{20, -10, 20, 10, 2}})});
   EXPECT_EQ(make(m, 0.3)->cast({0, 0}, 0), 15);
   EXPECT_NEAR(make(m, 0.3, 25)->cast({0, 0}, 0), 20, kEps);
-  EXPECT_EQ(make(m, 0.3, 20)->cast({0, 0}, 0), 20);          // exactly at rmax
-  EXPECT_EQ(make(make_map({}), 0.3)->cast({0, 0}, 1), 15);    // empty map
-  EXPECT_EQ(make(m, 0.3)->cast({500, 500}, 0), 15);           // far outside everything
-  EXPECT_NEAR(make(m, 0.3, 200)->cast({-100, 0}, 0), 120, kEps);   // from far outside
+  EXPECT_EQ(make(m, 0.3, 20)->cast({0, 0}, 0), 20);               // exactly at rmax
+  EXPECT_EQ(make(make_map({}), 0.3)->cast({0, 0}, 1), 15);        // empty map
+  EXPECT_EQ(make(m, 0.3)->cast({500, 500}, 0), 15);               // far outside everything
+  EXPECT_NEAR(make(m, 0.3, 200)->cast({-100, 0}, 0), 120, kEps);  // from far outside
 }
 
 TEST_P(RayRules, RayStartingOnASegment) {
@@ -190,9 +194,9 @@ TEST_P(RayRules, RaysParallelToWalls) {
                           make_obstacle(2, ShapeType::OpenPolygon, {{0, -1, 30, -1, 2}}),
                           make_obstacle(3, ShapeType::OpenPolygon, {{3, 7, 6, 7, 2}, {6, 7, 6, 9, 2}})});
   const auto rc = make(m, 0.3);
-  EXPECT_EQ(rc->cast({0, 0}, 0), 15);            // down a corridor
-  EXPECT_EQ(rc->cast({-5, 1.5}, 0), 15);         // beside a wall
-  EXPECT_NEAR(rc->cast({-5, 1}, 0), 5, kEps);    // along a wall's line: its end
+  EXPECT_EQ(rc->cast({0, 0}, 0), 15);          // down a corridor
+  EXPECT_EQ(rc->cast({-5, 1.5}, 0), 15);       // beside a wall
+  EXPECT_NEAR(rc->cast({-5, 1}, 0), 5, kEps);  // along a wall's line: its end
   EXPECT_NEAR(rc->cast({40, -1}, kPi), 10, kEps);
   // Along grid lines (integer coordinates) and through a wall's end.
   EXPECT_NEAR(rc->cast({3, 2}, kPi / 2), 5, kEps);

@@ -16,9 +16,9 @@ double hit(Point a, Point b, Point o, double angle) { return ray_segment_distanc
 
 TEST(RaySegment, PerpendicularHitAndMiss) {
   EXPECT_DOUBLE_EQ(hit({5, -1}, {5, 1}, {0, 0}, 0), 5);
-  EXPECT_EQ(hit({5, -1}, {5, 1}, {0, 0}, kPi), kNoHit);       // behind
-  EXPECT_EQ(hit({5, -1}, {5, 1}, {0, 0}, kPi / 2), kNoHit);   // beside
-  EXPECT_EQ(hit({5, 1}, {5, 3}, {0, 0}, 0), kNoHit);          // passes below its start
+  EXPECT_EQ(hit({5, -1}, {5, 1}, {0, 0}, kPi), kNoHit);      // behind
+  EXPECT_EQ(hit({5, -1}, {5, 1}, {0, 0}, kPi / 2), kNoHit);  // beside
+  EXPECT_EQ(hit({5, 1}, {5, 3}, {0, 0}, 0), kNoHit);         // passes below its start
   // Orientation of the segment does not matter.
   EXPECT_DOUBLE_EQ(hit({5, 1}, {5, -1}, {0, 0}, 0), 5);
 }
@@ -45,15 +45,15 @@ TEST(RaySegment, ParallelOffTheLineNeverHits) {
 
 TEST(RaySegment, AlongTheLineHitsTheNearerEnd) {
   EXPECT_DOUBLE_EQ(hit({0, 1}, {10, 1}, {-5, 1}, 0), 5);
-  EXPECT_DOUBLE_EQ(hit({10, 1}, {0, 1}, {-5, 1}, 0), 5);   // either orientation
-  EXPECT_EQ(hit({0, 1}, {10, 1}, {-5, 1}, kPi), kNoHit);   // pointing away
+  EXPECT_DOUBLE_EQ(hit({10, 1}, {0, 1}, {-5, 1}, 0), 5);    // either orientation
+  EXPECT_EQ(hit({0, 1}, {10, 1}, {-5, 1}, kPi), kNoHit);    // pointing away
   EXPECT_DOUBLE_EQ(hit({0, 1}, {10, 1}, {15, 1}, kPi), 5);  // from the other side
 }
 
 TEST(RaySegment, OriginOnTheSegmentIsZeroInEveryDirection) {
   for (double a : {0.0, 0.3, kPi / 2, kPi, -kPi / 2, 2.0}) {
-    EXPECT_EQ(hit({5, -1}, {5, 1}, {5, 0}, a), 0) << a;   // inside the segment
-    EXPECT_EQ(hit({5, -1}, {5, 1}, {5, 1}, a), 0) << a;   // on its end
+    EXPECT_EQ(hit({5, -1}, {5, 1}, {5, 0}, a), 0) << a;            // inside the segment
+    EXPECT_EQ(hit({5, -1}, {5, 1}, {5, 1}, a), 0) << a;            // on its end
     EXPECT_EQ(hit({5, -1}, {5, 1}, {5 + 1e-10, 0.5}, a), 0) << a;  // within tolerance
   }
 }

@@ -55,7 +55,9 @@ TEST(RrtConnect, SameSeedSamePath) {
     ASSERT_TRUE(pa && pb && pc);
     EXPECT_EQ(*pa, *pb);
     EXPECT_EQ(a.stats().iterations, b.stats().iterations);
-    if (pa->size() > 2) EXPECT_NE(*pa, *pc);  // another seed, other samples
+    if (pa->size() > 2) {
+      EXPECT_NE(*pa, *pc);  // another seed, other samples
+    }
     // solve() starts afresh: the same object gives the same path again.
     EXPECT_EQ(*a.solve(q.start, q.goal), *pa);
   }

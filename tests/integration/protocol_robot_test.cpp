@@ -1,5 +1,6 @@
 // Every op through its happy path and its error paths, driven by a reference robot that
 // uses plain SQL only, against the real fleetmap-server process and MariaDB.
+#include <cmath>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -144,7 +145,6 @@ TEST_F(ReferenceRobot, MalformedRequestsGetErrorsAndServingGoesOn) {
   expect_error("Ready", R"("just a string")", "bad_json");
   expect_error("OpAck", R"({"answer_id": 424242})", "unknown_answer");
   expect_error("OpAck", R"({})", "bad_params");
-  expect_error("GetPath", "{}", "no_planner");
   expect_error("GetPosIni", "{}", "no_pose");
   expect_error("GetPosEnd", "{}", "no_goal");
   // Not JSON at all: a robot can switch off the column's CHECK constraint for its session.
@@ -262,6 +262,38 @@ TEST_F(ReferenceRobot, PosesAndTasksFromTheOperator) {
   robot_->receive(1);
   EXPECT_EQ(scalar("SELECT state = 'aborted' FROM tasks WHERE id = " + std::to_string(task2)), 1);
   EXPECT_EQ(run("fleetmap", "abort proto_r1").exit_code, 4);  // nothing open any more
+}
+
+TEST_F(ReferenceRobot, GetPathPlansFromThePoseToTheGoal) {
+  ready();
+  expect_error("GetPath", "{}", "no_goal");
+  ASSERT_EQ(run("fleetmap", "goal proto_r1 50 12").exit_code, 0);
+  auto push = robot_->receive(1);
+  ASSERT_EQ(push.size(), 1u);
+  robot_->send("OpAck", json{{"answer_id", push[0].id}}.dump());
+  expect_error("GetPath", "{}", "no_pose");  // nothing reported yet
+  robot_->send("SendPos", R"({"x": 25, "y": 8, "theta": 0, "v": 0})");
+  auto a = ask("GetPath", "{}", 1);
+  ASSERT_EQ(a.size(), 1u);
+  ASSERT_EQ(a[0].op, "SetPath") << a[0].params.dump();
+  const auto& w = a[0].params["waypoints"];
+  ASSERT_GE(w.size(), 2u);
+  EXPECT_EQ(w.front(), json({25.0, 8.0}));
+  EXPECT_EQ(w.back(), json({50.0, 12.0}));
+  double length = 0;
+  for (size_t i = 1; i < w.size(); ++i)
+    length += std::hypot(w[i][0].get<double>() - w[i - 1][0].get<double>(), w[i][1].get<double>() - w[i - 1][1].get<double>());
+  EXPECT_NEAR(a[0].params["length"].get<double>(), length, 1e-9);
+  EXPECT_GE(length, std::hypot(25.0, 4.0) - 1e-9);
+  const long long task = scalar("SELECT MAX(id) FROM tasks WHERE robot_id = " + std::to_string(robot_id_));
+  EXPECT_EQ(scalar("SELECT state = 'active' FROM tasks WHERE id = " + std::to_string(task)), 1);
+  // A goal inside the closed library (its door is 2.5 m high): no path.
+  ASSERT_EQ(run("fleetmap", "goal proto_r1 12 30").exit_code, 0);
+  push = robot_->receive(1);  // SetPosEnd of the new task; the replaced one is aborted, no push
+  ASSERT_EQ(push.size(), 1u);
+  EXPECT_EQ(push[0].op, "SetPosEnd");
+  EXPECT_EQ(scalar("SELECT state = 'aborted' FROM tasks WHERE id = " + std::to_string(task)), 1);
+  expect_error("GetPath", "{}", "no_path");
 }
 
 TEST_F(ReferenceRobot, SilentRobotIsLostItsTaskFailsAndItComesBack) {
