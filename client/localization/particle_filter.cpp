@@ -103,6 +103,11 @@ void ParticleFilter::update(const std::vector<double>& ranges, std::optional<dou
   double budget = 1;
   const int stages = std::max(1, options_.tempering_stages);
   for (int stage = 0; stage < stages && budget > 1e-9; ++stage) {
+    // Weights kept from an earlier update may already be below the tempering target.
+    if (options_.tempering_ess > 0 && effective_sample_size() < options_.tempering_ess * poses_.size()) {
+      resample();
+      roughen();
+    }
     log_likelihood_.resize(poses_.size());
     parallel_for(options_.threads, poses_.size(), [&](int, size_t begin, size_t end) {
       std::vector<double> synthetic(beams_.size());
@@ -115,14 +120,14 @@ void ParticleFilter::update(const std::vector<double>& ranges, std::optional<dou
       }
     });
     const double phi = choose_tempering(log_likelihood_, budget);
+    const bool tempered = phi < budget;
     budget -= phi;
     // seed 000 eq. (6): w(t) = w(t-1) * 1 / sum_j 1 / L(delta_j), as logarithms (to the
     // power phi when tempered).
     for (size_t i = 0; i < poses_.size(); ++i) weights_[i] = std::log(weights_[i]) + phi * log_likelihood_[i];
     normalize_weights();
-    double sum_sq = 0;
-    for (double w : weights_) sum_sq += w * w;
-    if (1 / sum_sq < options_.resample_threshold * poses_.size()) {
+    // A tempered stage stopped at the target ESS: resample before the next one.
+    if (tempered || effective_sample_size() < options_.resample_threshold * poses_.size()) {
       resample();
       roughen();
     }
@@ -159,6 +164,12 @@ double ParticleFilter::choose_tempering(const std::vector<double>& ll, double mo
     (ess(mid) >= target ? lo : hi) = mid;
   }
   return lo;
+}
+
+double ParticleFilter::effective_sample_size() const {
+  double sum_sq = 0;
+  for (double w : weights_) sum_sq += w * w;
+  return 1 / sum_sq;
 }
 
 void ParticleFilter::normalize_weights() {

@@ -135,6 +135,7 @@ class ParticleFilter {
  private:
   // The largest phi <= most that keeps tempering_ess of the particles effective.
   double choose_tempering(const std::vector<double>& log_likelihood, double most) const;
+  double effective_sample_size() const;  // of the normalized weights
   void normalize_weights();
   void resample();
   void roughen();
