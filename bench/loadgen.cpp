@@ -219,7 +219,7 @@ double thread_cpu_s() {
   return t.tv_sec + t.tv_nsec / 1e9;
 }
 
-const char* const kCounters[] = {"Questions",  "Com_commit", "Handler_commit",     "Com_insert",      "Com_delete",
+const char* const kCounters[] = {"Questions",  "Com_commit", "Handler_commit",     "Com_insert",       "Com_delete",
                                  "Com_select", "Com_update", "Innodb_data_fsyncs", "Innodb_log_writes"};
 
 std::map<std::string, double> db_counters(mysqlpp::Connection& c) {
@@ -396,7 +396,8 @@ void RobotThread::start_query(Robot& r, Robot::Stage stage) {
   int err = 0;
   r.stage = stage;
   r.wait = mysql_real_query_start(&err, r.db, r.sql.data(), r.sql.size());
-  if (r.wait & MYSQL_WAIT_TIMEOUT) r.deadline = Clock::now() + std::chrono::milliseconds(mysql_get_timeout_value_ms(r.db));
+  if (r.wait & MYSQL_WAIT_TIMEOUT)
+    r.deadline = Clock::now() + std::chrono::milliseconds(mysql_get_timeout_value_ms(r.db));
   if (r.wait == 0) finished(r);
 }
 
@@ -421,7 +422,8 @@ void RobotThread::resume(Robot& r, int flags) {
     default:
       return;
   }
-  if (r.wait & MYSQL_WAIT_TIMEOUT) r.deadline = Clock::now() + std::chrono::milliseconds(mysql_get_timeout_value_ms(r.db));
+  if (r.wait & MYSQL_WAIT_TIMEOUT)
+    r.deadline = Clock::now() + std::chrono::milliseconds(mysql_get_timeout_value_ms(r.db));
   if (r.wait == 0) finished(r);
 }
 
@@ -433,8 +435,10 @@ void RobotThread::finished(Robot& r) {
   if (mysql_errno(r.db) != 0 && stage != Robot::kStore) {
     const unsigned e = mysql_errno(r.db);
     const std::string msg = std::string(mysql_error(r.db)) + " (error " + std::to_string(e) + ")";
-    if (stage == Robot::kInsert) stats.insert_errors++;
-    else stats.query_errors++;
+    if (stage == Robot::kInsert)
+      stats.insert_errors++;
+    else
+      stats.query_errors++;
     if (stage == Robot::kConnect || (e >= 2000 && e < 3000)) return fail(r, msg);
     sh_.report_error(r.name + ": " + msg);
     if (stage == Robot::kInsert && r.cur.kind == kReady) return fail(r, "Ready not sent");
@@ -659,8 +663,8 @@ void RobotThread::act(Robot& r, TimePoint now) {
     return start_query(r, Robot::kInsert);
   }
   const bool poll_answer = !r.awaiting.empty() && now >= r.next_poll;
-  const bool poll_idle = sh_.go && o_.idle_poll_ms > 0 && now >= r.next_idle_poll && now < sh_.m_end &&
-                         o_.workload == "fleet";
+  const bool poll_idle =
+      sh_.go && o_.idle_poll_ms > 0 && now >= r.next_idle_poll && now < sh_.m_end && o_.workload == "fleet";
   if (poll_answer || poll_idle) {
     r.sql = "SELECT id, request_id, op, params, payload FROM sa_mine WHERE id > " + std::to_string(r.last_answer) +
             " ORDER BY id LIMIT 100";
@@ -855,8 +859,8 @@ void floor_answerer(Shared& sh, const fleetmap::DbSettings& db, double& cpu_in_w
   run("SET SESSION TRANSACTION ISOLATION LEVEL READ COMMITTED");
   run("SET autocommit = 0");
   uint64_t retries = 0;
-  const std::string claim =
-      "SELECT id, db_user, op FROM rr ORDER BY id LIMIT " + std::to_string(sh.opt.floor_batch) + " FOR UPDATE SKIP LOCKED";
+  const std::string claim = "SELECT id, db_user, op FROM rr ORDER BY id LIMIT " + std::to_string(sh.opt.floor_batch) +
+                            " FOR UPDATE SKIP LOCKED";
   double cpu0 = NAN, cpu1 = NAN;
   try {
     while (!sh.stop_helpers.load()) {
@@ -866,32 +870,33 @@ void floor_answerer(Shared& sh, const fleetmap::DbSettings& db, double& cpu_in_w
         if (std::isnan(cpu1) && now >= sh.m_end) cpu1 = thread_cpu_s();
       }
       try {
-      if (mysql_real_query(c, claim.data(), claim.size()) != 0) fail();
-      MYSQL_RES* res = mysql_store_result(c);
-      std::string del, ins;
-      size_t n = 0;
-      while (MYSQL_ROW row = res ? mysql_fetch_row(res) : nullptr) {
-        ++n;
-        const std::string id = row[0], user = row[1], op = row[2];
-        del += (del.empty() ? "" : ",") + id;
-        if (op == "GetMap" || op == "SendGPS" || op == "Ready") {
-          const auto it = ids.find(user);
-          const std::string rid = std::to_string(it == ids.end() ? 0 : it->second);
-          ins += std::string(ins.empty() ? "" : ",") + "(" + rid + ", '" + user + "', " + id + ", 'OpAck', '{\"request_id\":" +
-                 id + "}', SYSDATE(6))";
-          if (op == "Ready") ins += ",(" + rid + ", '" + user + "', " + id + ", 'SetMap', '{}', SYSDATE(6))";
+        if (mysql_real_query(c, claim.data(), claim.size()) != 0) fail();
+        MYSQL_RES* res = mysql_store_result(c);
+        std::string del, ins;
+        size_t n = 0;
+        while (MYSQL_ROW row = res ? mysql_fetch_row(res) : nullptr) {
+          ++n;
+          const std::string id = row[0], user = row[1], op = row[2];
+          del += (del.empty() ? "" : ",") + id;
+          if (op == "GetMap" || op == "SendGPS" || op == "Ready") {
+            const auto it = ids.find(user);
+            const std::string rid = std::to_string(it == ids.end() ? 0 : it->second);
+            ins += std::string(ins.empty() ? "" : ",") + "(" + rid + ", '" + user + "', " + id +
+                   ", 'OpAck', '{\"request_id\":" + id + "}', SYSDATE(6))";
+            if (op == "Ready") ins += ",(" + rid + ", '" + user + "', " + id + ", 'SetMap', '{}', SYSDATE(6))";
+          }
         }
-      }
-      if (res) mysql_free_result(res);
-      if (n == 0) {  // nothing locked: the open transaction holds nothing; poll again at once
-        ++empty_polls;
-        continue;
-      }
-      std::string q;
-      if (!ins.empty()) q = "INSERT INTO sa (robot_id, db_user, request_id, op, params, created_at) VALUES " + ins + "; ";
-      q += "DELETE FROM rr WHERE id IN (" + del + "); COMMIT";
-      run(q);
-      handled += n;
+        if (res) mysql_free_result(res);
+        if (n == 0) {  // nothing locked: the open transaction holds nothing; poll again at once
+          ++empty_polls;
+          continue;
+        }
+        std::string q;
+        if (!ins.empty())
+          q = "INSERT INTO sa (robot_id, db_user, request_id, op, params, created_at) VALUES " + ins + "; ";
+        q += "DELETE FROM rr WHERE id IN (" + del + "); COMMIT";
+        run(q);
+        handled += n;
       } catch (const Retry&) {
         ++retries;
       }
@@ -932,7 +937,9 @@ void lean_answerer(Shared& sh, const fleetmap::DbSettings& db, double& cpu_in_wi
   const size_t batch = static_cast<size_t>(sh.opt.floor_batch);
   const double poll_max = sh.opt.poll_max_ms >= 0 ? sh.opt.poll_max_ms : 10;
   double idle_ms = 0, cpu0 = NAN, cpu1 = NAN;
-  auto num_or = [](const Json& j, const char* k) { return j.contains(k) && j[k].is_number() ? j[k].get<double>() : 0.0; };
+  auto num_or = [](const Json& j, const char* k) {
+    return j.contains(k) && j[k].is_number() ? j[k].get<double>() : 0.0;
+  };
   while (!sh.stop_helpers.load()) {
     if (sh.go) {
       const TimePoint now = Clock::now();
@@ -957,8 +964,13 @@ void lean_answerer(Shared& sh, const fleetmap::DbSettings& db, double& cpu_in_wi
       }
       idle_ms = 0;
       // 2. Claim the robots, 3. read their requests in id order.
-      struct Bot { unsigned id; std::optional<unsigned> map_id; std::string user; std::string last_seen;
-                   std::optional<std::array<double, 4>> pose; };
+      struct Bot {
+        unsigned id;
+        std::optional<unsigned> map_id;
+        std::string user;
+        std::string last_seen;
+        std::optional<std::array<double, 4>> pose;
+      };
       std::map<std::string, Bot> bots;
       {
         mysqlpp::Query q = conn.query();
@@ -1008,9 +1020,10 @@ void lean_answerer(Shared& sh, const fleetmap::DbSettings& db, double& cpu_in_wi
             << ",'OpAck','{\"request_id\":" << id << "}',NULL,SYSDATE(6))";
           any_answer = true;
         } else if (op == "GetMap" && b.map_id) {
-          const Rect win = intersection(Rect::centred({num_or(p, "x"), num_or(p, "y")}, std::min(num_or(p, "w"), 1000.0),
-                                                      std::min(num_or(p, "h"), 1000.0)),
-                                        border);
+          const Rect win =
+              intersection(Rect::centred({num_or(p, "x"), num_or(p, "y")}, std::min(num_or(p, "w"), 1000.0),
+                                         std::min(num_or(p, "h"), 1000.0)),
+                           border);
           const Map m = maps.window(*b.map_id, win);
           w << (any_answer ? "," : "") << "(" << b.id << "," << mysqlpp::quote << user << "," << id << ",'SetMap',"
             << mysqlpp::quote << encode(set_map_params(m, MapEncoding::Seed)).dump() << "," << mysqlpp::quote
@@ -1023,7 +1036,8 @@ void lean_answerer(Shared& sh, const fleetmap::DbSettings& db, double& cpu_in_wi
       if (!traj.empty()) m << "INSERT INTO trajectories (robot_id, t, x, y, theta, v, w, pos) VALUES " << traj << ";";
       if (!gps.empty()) m << "INSERT INTO gps_fixes (robot_id, t, lat, lon) VALUES " << gps << ";";
       if (any_answer)
-        m << "INSERT INTO sa (robot_id, db_user, request_id, op, params, payload, created_at) VALUES " << sa_values << ";";
+        m << "INSERT INTO sa (robot_id, db_user, request_id, op, params, payload, created_at) VALUES " << sa_values
+          << ";";
       for (auto& [u, b] : bots) {
         if (b.last_seen.empty()) continue;
         m << "UPDATE robots SET last_seen = GREATEST(COALESCE(last_seen, 0), '" << b.last_seen << "')";
@@ -1105,14 +1119,18 @@ std::string row_name(const Json& r) {
 // One table of fleet runs; the last column compares with the floor of the same size.
 void fleet_table(const std::vector<Json>& rows, const std::vector<Json>& v) {
   std::printf("%-7s %6s %6s | %-17s %-17s | %-17s | %6s %6s %6s %5s | %s\n", "run", "robots", "req/s", "GetMap p50/p99",
-              "SendGPS p50/p99", "SendPos lag", "srv%", "db%", "rob%", "mach", "x floor: GetMap p50,p99 SendGPS p50,p99 lag p50,p99");
+              "SendGPS p50/p99", "SendPos lag", "srv%", "db%", "rob%", "mach",
+              "x floor: GetMap p50,p99 SendGPS p50,p99 lag p50,p99");
   for (const Json& r : v) {
     std::string vs;
     if (r["mode"] != "floor")
       if (const Json* f = floor_for(rows, r)) {
-        auto x = [&](const char* a, const char* k, const char* p) { return ratio(num(r, {a, k, p}), num(*f, {a, k, p})); };
-        vs = x("answer_ms", "GetMap", "p50") + "," + x("answer_ms", "GetMap", "p99") + "  " + x("answer_ms", "SendGPS", "p50") +
-             "," + x("answer_ms", "SendGPS", "p99") + "  " + x("lag_ms", "SendPos", "p50") + "," + x("lag_ms", "SendPos", "p99");
+        auto x = [&](const char* a, const char* k, const char* p) {
+          return ratio(num(r, {a, k, p}), num(*f, {a, k, p}));
+        };
+        vs = x("answer_ms", "GetMap", "p50") + "," + x("answer_ms", "GetMap", "p99") + "  " +
+             x("answer_ms", "SendGPS", "p50") + "," + x("answer_ms", "SendGPS", "p99") + "  " +
+             x("lag_ms", "SendPos", "p50") + "," + x("lag_ms", "SendPos", "p99");
       }
     const double unans = num(r, {"unanswered"});
     if (unans > 0) vs += "  " + f2(unans, "%.0f") + " UNANSWERED";
@@ -1130,7 +1148,8 @@ void fleet_table(const std::vector<Json>& rows, const std::vector<Json>& v) {
 
 void db_line(const char* what, const Json& r) {
   std::printf("  %-6s %5.0f req/s, rr backlog p50/max %s/%s rows, DB %s statements/s, %s COMMIT/s, %s fsyncs/s\n", what,
-              num(r, {"rate_sent"}), f2(num(r, {"backlog", "p50"}), "%.0f").c_str(), f2(num(r, {"backlog", "max"}), "%.0f").c_str(),
+              num(r, {"rate_sent"}), f2(num(r, {"backlog", "p50"}), "%.0f").c_str(),
+              f2(num(r, {"backlog", "max"}), "%.0f").c_str(),
               f2(num(r, {"cpu", "db_per_s", "Questions"}), "%.0f").c_str(),
               f2(num(r, {"cpu", "db_per_s", "Com_commit"}), "%.0f").c_str(),
               f2(num(r, {"cpu", "db_per_s", "Innodb_data_fsyncs"}), "%.0f").c_str());
@@ -1153,23 +1172,26 @@ void print_report(const std::string& file, const std::string& phase) {
     std::printf("\n== 1. Floor: the bare database path (robots -> rr -> minimal answering loop -> sa -> sa_mine)\n");
     for (const Json& r : floors)
       if (r["workload"] == "lone")
-        std::printf("lone robot (one request at a time): SendGPS answer p50 %s ms, p99 %s ms   (SPEC 9: p50 ~1.3, p99 ~2.3)\n",
-                    f2(num(r, {"answer_ms", "SendGPS", "p50"})).c_str(), f2(num(r, {"answer_ms", "SendGPS", "p99"})).c_str());
+        std::printf(
+            "lone robot (one request at a time): SendGPS answer p50 %s ms, p99 %s ms   (SPEC 9: p50 ~1.3, p99 ~2.3)\n",
+            f2(num(r, {"answer_ms", "SendGPS", "p50"})).c_str(), f2(num(r, {"answer_ms", "SendGPS", "p99"})).c_str());
     std::vector<Json> fleet;
     for (const Json& r : floors)
       if (r["workload"] == "fleet") fleet.push_back(r);
     fleet_table(rows, fleet);
     const double poll = floors.empty() ? NAN : num(floors[0], {"answer_poll_ms"});
     const double mon = floors.empty() ? NAN : num(floors[0], {"monitor_ms"});
-    std::printf("(ms. Answer: INSERT start -> answer read; robots poll sa_mine every %g ms while an answer is due,\n"
-                " then every 10%% of the wait. SendPos lag: INSERT start -> rr row gone, monitor snapshot of rr every %g ms\n"
-                " (+-%g ms). CPU in %% of one core: srv = fleetmap-server (or the answering loop for floor and lean),\n"
-                " db = mariadbd, rob = the robots (this program), mach = whole machine incl. other users, of 200.)\n",
-                poll, mon, mon / 2);
+    std::printf(
+        "(ms. Answer: INSERT start -> answer read; robots poll sa_mine every %g ms while an answer is due,\n"
+        " then every 10%% of the wait. SendPos lag: INSERT start -> rr row gone, monitor snapshot of rr every %g ms\n"
+        " (+-%g ms). CPU in %% of one core: srv = fleetmap-server (or the answering loop for floor and lean),\n"
+        " db = mariadbd, rob = the robots (this program), mach = whole machine incl. other users, of 200.)\n",
+        poll, mon, mon / 2);
   }
   if (all || phase == "server") {
-    std::printf("\n== 2. The real server (1 process, default workers) beside the floor of phase 1; lean = a batched\n"
-                "      prototype in fleetmap-loadgen doing the same durable work (see --mode lean)\n");
+    std::printf(
+        "\n== 2. The real server (1 process, default workers) beside the floor of phase 1; lean = a batched\n"
+        "      prototype in fleetmap-loadgen doing the same durable work (see --mode lean)\n");
     const std::vector<Json> v = of("server");
     fleet_table(rows, v);
     for (const Json& r : v) {
@@ -1193,14 +1215,14 @@ void print_report(const std::string& file, const std::string& phase) {
     for (const Json& r : floors)
       if (r["workload"] == "lone")
         lone = f2(num(r, {"answer_ms", "SendGPS", "p50"})) + " / " + f2(num(r, {"answer_ms", "SendGPS", "p99"}));
-    std::printf("%11s | %9s %9s %8s | %-21s | %s\n", "poll_max_ms", "srv% idle", "db% idle", "stmts/s", "lone SendGPS p50/p99",
-                "floor lone robot p50/p99");
+    std::printf("%11s | %9s %9s %8s | %-21s | %s\n", "poll_max_ms", "srv% idle", "db% idle", "stmts/s",
+                "lone SendGPS p50/p99", "floor lone robot p50/p99");
     for (const Json& r : of("idle"))
       std::printf("%11s | %9s %9s %8s | %8s / %8s   | %s\n", f2(num(r, {"poll_max_ms"}), "%g").c_str(),
                   f2(num(r, {"idle_cpu", "server_pct"})).c_str(), f2(num(r, {"idle_cpu", "db_pct"})).c_str(),
                   f2(num(r, {"idle_cpu", "db_per_s", "Questions"}), "%.0f").c_str(),
-                  f2(num(r, {"answer_ms", "SendGPS", "p50"})).c_str(), f2(num(r, {"answer_ms", "SendGPS", "p99"})).c_str(),
-                  lone.c_str());
+                  f2(num(r, {"answer_ms", "SendGPS", "p50"})).c_str(),
+                  f2(num(r, {"answer_ms", "SendGPS", "p99"})).c_str(), lone.c_str());
   }
   if (all || phase == "scaling") {
     std::printf("\n== 4. Scaling: robots x server processes (default workers each); a series stops when p99 > 20 ms\n");
@@ -1209,8 +1231,10 @@ void print_report(const std::string& file, const std::string& phase) {
     for (const Json& r : of("scaling")) {
       auto& b = best.try_emplace(row_name(r), 0, 0).first->second;
       const int n = r["robots"].get<int>();
-      if (worst_p99(r) <= 20 && num(r, {"unanswered"}) == 0) b.first = std::max(b.first, n);
-      else if (!b.second || n < b.second) b.second = n;
+      if (worst_p99(r) <= 20 && num(r, {"unanswered"}) == 0)
+        b.first = std::max(b.first, n);
+      else if (!b.second || n < b.second)
+        b.second = n;
     }
     for (auto& [series, b] : best)
       std::printf("%-7s largest fleet with p99 <= 20 ms: %s%s   (target: 1000 robots, ~4700 req/s)\n", series.c_str(),
@@ -1225,13 +1249,16 @@ void print_report(const std::string& file, const std::string& phase) {
 
 int main(int argc, char** argv) {
   using namespace fleetmap;
-  CLI::App app{"fleetmap-loadgen: robots that speak RR/SA with plain SQL, for measuring fleetmap-server against the "
-               "bare database path (driven by scripts/bench-server.sh)"};
+  CLI::App app{
+      "fleetmap-loadgen: robots that speak RR/SA with plain SQL, for measuring fleetmap-server against the "
+      "bare database path (driven by scripts/bench-server.sh)"};
   Options o;
   app.add_option("--mode", o.mode, "floor, server, lean, idle, report")
       ->check(CLI::IsMember({"floor", "server", "lean", "idle", "report"}))
       ->capture_default_str();
-  app.add_option("--workload", o.workload, "fleet or lone")->check(CLI::IsMember({"fleet", "lone"}))->capture_default_str();
+  app.add_option("--workload", o.workload, "fleet or lone")
+      ->check(CLI::IsMember({"fleet", "lone"}))
+      ->capture_default_str();
   app.add_option("--robots", o.robots, "robots (accounts PREFIX0001...)")->capture_default_str();
   app.add_option("--first", o.first, "number of the first robot account")->capture_default_str();
   app.add_option("--prefix", o.prefix, "robot account name prefix")->capture_default_str();
@@ -1239,7 +1266,8 @@ int main(int argc, char** argv) {
   app.add_option("--threads", o.threads, "client threads multiplexing the robot connections")->capture_default_str();
   app.add_option("--seconds", o.seconds, "measurement window (idle: seconds of no traffic)")->capture_default_str();
   app.add_option("--warmup", o.warmup, "traffic before the window, s")->capture_default_str();
-  app.add_option("--drain", o.drain, "after the window: wait this long for outstanding answers, s")->capture_default_str();
+  app.add_option("--drain", o.drain, "after the window: wait this long for outstanding answers, s")
+      ->capture_default_str();
   app.add_option("--answer-poll-ms", o.answer_poll_ms, "robots poll sa_mine this often while an answer is due")
       ->capture_default_str();
   app.add_option("--poll-backoff", o.poll_backoff,
@@ -1247,7 +1275,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--idle-poll-ms", o.idle_poll_ms, "robots poll sa_mine this often otherwise (pushed ops); 0: never")
       ->capture_default_str();
-  app.add_option("--monitor-ms", o.monitor_ms, "rr snapshot period for the processing lag; 0: off")->capture_default_str();
+  app.add_option("--monitor-ms", o.monitor_ms, "rr snapshot period for the processing lag; 0: off")
+      ->capture_default_str();
   app.add_option("--pos-hz", o.pos_hz, "SendPos rate per robot")->capture_default_str();
   app.add_option("--map-period", o.map_period_s, "GetMap period per robot, s")->capture_default_str();
   app.add_option("--gps-period", o.gps_period_s, "SendGPS period per robot, s")->capture_default_str();
@@ -1256,7 +1285,8 @@ int main(int argc, char** argv) {
   app.add_option("--window", o.window_m, "GetMap window side, m")->capture_default_str();
   app.add_option("--map", o.map, "the robots' map (for its border)")->capture_default_str();
   app.add_option("--lone-count", o.lone_count, "lone workload: requests")->capture_default_str();
-  app.add_option("--floor-threads", o.floor_threads, "floor: answering threads (each busy-polls)")->capture_default_str();
+  app.add_option("--floor-threads", o.floor_threads, "floor: answering threads (each busy-polls)")
+      ->capture_default_str();
   app.add_option("--floor-batch", o.floor_batch, "floor and lean: rr rows per transaction")->capture_default_str();
   app.add_option("--lean-threads", o.lean_threads, "lean: answering threads (back-off polling as the server's)")
       ->capture_default_str();
@@ -1352,7 +1382,8 @@ int main(int argc, char** argv) {
       std::snprintf(name, sizeof name, "%s%04d", o.prefix.c_str(), o.first + i);
       r.name = name;
       std::ifstream pw(o.password_dir + "/" + r.name + ".pw");
-      if (!std::getline(pw, r.password)) throw std::runtime_error("no password file " + o.password_dir + "/" + r.name + ".pw");
+      if (!std::getline(pw, r.password))
+        throw std::runtime_error("no password file " + o.password_dir + "/" + r.name + ".pw");
       r.rng.seed(o.seed * 7919 + i);
       const Bounds& m = sh.bounds;
       std::uniform_real_distribution<double> ux(m.xmin + 60, std::max(m.xmin + 61, m.xmax - 60)),
@@ -1372,8 +1403,10 @@ int main(int argc, char** argv) {
     std::vector<uint64_t> answerer_handled(answerer_cpu.size(), 0), answerer_empty(answerer_cpu.size(), 0);
     for (size_t i = 0; i < answerer_cpu.size(); ++i)
       helpers.emplace_back([&, i] {
-        if (o.mode == "lean") lean_answerer(sh, server_db, answerer_cpu[i], answerer_handled[i], answerer_empty[i]);
-        else floor_answerer(sh, server_db, answerer_cpu[i], answerer_handled[i], answerer_empty[i]);
+        if (o.mode == "lean")
+          lean_answerer(sh, server_db, answerer_cpu[i], answerer_handled[i], answerer_empty[i]);
+        else
+          floor_answerer(sh, server_db, answerer_cpu[i], answerer_handled[i], answerer_empty[i]);
       });
 
     const TimePoint t_setup = Clock::now();
@@ -1441,7 +1474,8 @@ int main(int argc, char** argv) {
       sent += s.sent;
       unanswered += s.unanswered;
       if (s.sent == 0) continue;
-      counts[kKindName[k]] = {{"sent", s.sent}, {"answered", s.answered}, {"errors", s.errors}, {"unanswered", s.unanswered}};
+      counts[kKindName[k]] = {
+          {"sent", s.sent}, {"answered", s.answered}, {"errors", s.errors}, {"unanswered", s.unanswered}};
       if (!s.latency.v.empty()) answer[kKindName[k]] = s.latency.summary();
       if (!s.lag.v.empty()) lag[kKindName[k]] = s.lag.summary();
       insert[kKindName[k]] = s.insert.summary();
@@ -1464,8 +1498,8 @@ int main(int argc, char** argv) {
     out["monitor_queries"] = mon_queries;
     if (!total.error_codes.empty()) out["error_codes"] = total.error_codes;
     if (o.mode == "floor" || o.mode == "lean")
-      out["answerer"] = {{"handled", handled}, {"empty_polls", empty}, {"threads", answerer_cpu.size()},
-                         {"batch", o.floor_batch}};
+      out["answerer"] = {
+          {"handled", handled}, {"empty_polls", empty}, {"threads", answerer_cpu.size()}, {"batch", o.floor_batch}};
 
     // Human-readable summary of this run
     std::printf("%s: %.0f requests/s sent over %.1f s (%llu requests)", o.label.c_str(), sent / window_s, window_s,
@@ -1481,22 +1515,26 @@ int main(int argc, char** argv) {
       std::printf("  %-8s sent %6llu", n, static_cast<unsigned long long>(total.kind[k].sent));
       if (answer.contains(n))
         std::printf("  answer p50 %6s p99 %6s ms", fmt(answer[n], "p50").c_str(), fmt(answer[n], "p99").c_str());
-      if (lag.contains(n)) std::printf("  rr lag p50 %6s p99 %6s ms", fmt(lag[n], "p50").c_str(), fmt(lag[n], "p99").c_str());
+      if (lag.contains(n))
+        std::printf("  rr lag p50 %6s p99 %6s ms", fmt(lag[n], "p50").c_str(), fmt(lag[n], "p99").c_str());
       std::printf("  insert p50 %5s p99 %6s ms  slip p99 %6s ms", fmt(insert[n], "p50").c_str(),
                   fmt(insert[n], "p99").c_str(), fmt(slip[n], "p99").c_str());
       if (total.kind[k].errors) std::printf("  %llu errors", static_cast<unsigned long long>(total.kind[k].errors));
       std::printf("\n");
     }
-    for (auto& [c, n] : total.error_codes) std::printf("  error answers %s: %llu\n", c.c_str(), static_cast<unsigned long long>(n));
+    for (auto& [c, n] : total.error_codes)
+      std::printf("  error answers %s: %llu\n", c.c_str(), static_cast<unsigned long long>(n));
     const Json& cpu = out["cpu"];
-    std::printf("  CPU %% of one core: servers %s, mariadbd %s, robots (this program) %s%s, machine %s of %s; DB %s "
-                "statements/s, %s COMMITs/s, %s fsyncs/s\n",
-                fmt(cpu, "server_pct", "%.1f").c_str(), fmt(cpu, "db_pct", "%.1f").c_str(),
-                fmt(cpu, "robots_pct", "%.1f").c_str(),
-                answerer_cpu.empty() ? "" : (", " + o.mode + " answerer " + fmt(cpu, "floor_answerer_pct", "%.1f")).c_str(),
-                fmt(cpu, "machine_pct", "%.0f").c_str(), f2(100 * num(cpu, {"cores"}), "%.0f").c_str(),
-                f2(num(cpu, {"db_per_s", "Questions"}), "%.0f").c_str(), f2(num(cpu, {"db_per_s", "Com_commit"}), "%.0f").c_str(),
-                f2(num(cpu, {"db_per_s", "Innodb_data_fsyncs"}), "%.0f").c_str());
+    std::printf(
+        "  CPU %% of one core: servers %s, mariadbd %s, robots (this program) %s%s, machine %s of %s; DB %s "
+        "statements/s, %s COMMITs/s, %s fsyncs/s\n",
+        fmt(cpu, "server_pct", "%.1f").c_str(), fmt(cpu, "db_pct", "%.1f").c_str(),
+        fmt(cpu, "robots_pct", "%.1f").c_str(),
+        answerer_cpu.empty() ? "" : (", " + o.mode + " answerer " + fmt(cpu, "floor_answerer_pct", "%.1f")).c_str(),
+        fmt(cpu, "machine_pct", "%.0f").c_str(), f2(100 * num(cpu, {"cores"}), "%.0f").c_str(),
+        f2(num(cpu, {"db_per_s", "Questions"}), "%.0f").c_str(),
+        f2(num(cpu, {"db_per_s", "Com_commit"}), "%.0f").c_str(),
+        f2(num(cpu, {"db_per_s", "Innodb_data_fsyncs"}), "%.0f").c_str());
     {
       const double w = std::max(num(out, {"answer_ms", "GetMap", "p99"}), num(out, {"answer_ms", "SendGPS", "p99"}));
       if (!std::isnan(w)) std::printf("  worst answered p99 (GetMap, SendGPS): %.2f ms\n", w);

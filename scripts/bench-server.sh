@@ -119,7 +119,14 @@ WORKERS=$( "$BIN/fleetmap-server" --check $SERVER_FLAGS | sed -n 's/.*, \([0-9]*
 
 # Undelivered traffic of an earlier run must not be the next run's load.
 clear_mailboxes() {
-  local i
+  local i n
+  # A fleetmap-server left from elsewhere would answer (and end robot connections) under the
+  # floor's feet: none may be connected between runs.
+  n="$(sql "SELECT COUNT(*) FROM information_schema.PROCESSLIST WHERE USER = 'fleetmap_server'")"
+  if [ "$n" != 0 ]; then
+    echo "bench-server: $n connection(s) of fleetmap_server to $FLEETMAP_HOME between runs; stop that server first" >&2
+    exit 1
+  fi
   for i in 1 2 3 4 5; do
     sql "DELETE FROM rr; DELETE FROM sa" 2>/dev/null && return 0
     sleep 1
@@ -189,9 +196,8 @@ if has_phase scaling; then
   }
   SERIES="floor"
   for procs in $PROCS; do SERIES="$SERIES p$procs"; done
-  [ "$LEAN" = 1 ] && SERIES="$SERIES lean"
+  if [ "$LEAN" = 1 ]; then SERIES="$SERIES lean"; fi
   for n in $SCALING; do
-    [ -n "${SERIES// /}" ] || break
     NEXT=""
     for s in $SERIES; do
       case "$s" in
@@ -208,9 +214,11 @@ if has_phase scaling; then
             --label "$procs proc $n robots" --server-pid "$(pids)" --server-procs "$procs" --workers "$WORKERS"
           stop_servers ;;
       esac
-      over "$n robots ($s)" || NEXT="$NEXT $s"
+      # The floor is the reference: it runs as long as another series does.
+      if [ "$s" = floor ] || ! over "$n robots ($s)"; then NEXT="$NEXT $s"; fi
     done
     SERIES="$NEXT"
+    if [ "${SERIES// /}" = floor ]; then break; fi
   done
 fi
 

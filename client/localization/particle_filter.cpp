@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "client/localization/parallel.h"
-#include "common/grid_ray_caster.h"
+#include "common/sweep_ray_caster.h"
 
 namespace fleetmap::localization {
 
@@ -39,7 +39,7 @@ ParticleFilterOptions ParticleFilterOptions::robust() {
 }
 
 ParticleFilter::ParticleFilter(const Map& map, ParticleFilterOptions options)
-    : ParticleFilter(map, std::make_shared<GridRayCaster>(map, options.laser), options) {}
+    : ParticleFilter(map, std::shared_ptr<const RayCaster>(make_fast_ray_caster(map, options.laser)), options) {}
 
 ParticleFilter::ParticleFilter(const Map& map, std::shared_ptr<const RayCaster> caster, ParticleFilterOptions options)
     : options_(options),
@@ -55,7 +55,7 @@ ParticleFilter::ParticleFilter(const Map& map, std::shared_ptr<const RayCaster> 
   set_map(map, std::move(caster));
 }
 
-void ParticleFilter::set_map(const Map& map) { set_map(map, std::make_shared<GridRayCaster>(map, options_.laser)); }
+void ParticleFilter::set_map(const Map& map) { set_map(map, std::shared_ptr<const RayCaster>(make_fast_ray_caster(map, options_.laser))); }
 
 void ParticleFilter::set_map(const Map& map, std::shared_ptr<const RayCaster> caster) {
   if (!caster) throw std::invalid_argument("ParticleFilter::set_map: caster: expected non-null");
@@ -82,6 +82,16 @@ void ParticleFilter::init_pose(const Pose& pose, double sd_xy, double sd_theta) 
   for (Pose& p : poses_)
     p = {pose.x + sd_xy * n01(rng_), pose.y + sd_xy * n01(rng_), normalize_angle(pose.theta + sd_theta * n01(rng_))};
   weights_.assign(n, 1.0 / n);
+}
+
+void ParticleFilter::set_particles(std::vector<Pose> poses, std::vector<double> weights) {
+  double sum = 0;
+  for (double w : weights) sum += w >= 0 ? w : std::numeric_limits<double>::quiet_NaN();
+  if (poses.empty() || poses.size() != weights.size() || !(sum > 0))
+    throw std::invalid_argument("ParticleFilter::set_particles: expected as many weights >= 0 as poses, some > 0");
+  for (double& w : weights) w /= sum;
+  poses_ = std::move(poses);
+  weights_ = std::move(weights);
 }
 
 void ParticleFilter::predict(const Odometry& odometry) {

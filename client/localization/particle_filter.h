@@ -107,17 +107,21 @@ class ParticleFilter {
   void set_map(const Map& map);
   void set_map(const Map& map, std::shared_ptr<const RayCaster> caster);
 
-  // Global localization: NP particles uniform over free space, headings within the
-  // compass's +-half width of the reading, or uniform in (-pi, pi] without one.
+  // Global localization: NP particles (global_density) uniform over free space,
+  // headings within the compass's +-half width of the reading, or uniform in (-pi, pi]
+  // without one.
   void init_global(std::optional<double> compass);
   // Tracking from a known pose: NP particles from N(pose, diag(sd_xy, sd_xy, sd_theta)).
   void init_pose(const Pose& pose, double sd_xy, double sd_theta);
+  // Any particle set (a saved state, a test's); weights are normalized here. Throws
+  // std::invalid_argument when the sizes differ, the set is empty or no weight is > 0.
+  void set_particles(std::vector<Pose> poses, std::vector<double> weights);
 
   // Prediction with the odometry measured since the last call.
   void predict(const Odometry& odometry);
   // Correction with a scan (ranges[j] along beam_angles()[j]) and an optional compass
   // reading; resamples when the weights call for it. Throws std::invalid_argument when
-  // ranges.size() != NL.
+  // ranges.size() != NL, std::logic_error before any initialisation.
   void update(const std::vector<double>& ranges, std::optional<double> compass = std::nullopt);
 
   PoseEstimate estimate() const;

@@ -14,16 +14,18 @@
 // is explained by the normal term alone. Beams the laser returned at RMAX (nothing hit)
 // are compared like any other: the synthetic ray of a good particle also ends at RMAX.
 //
-// Eq. (6) combines the beams by the inverse of the sum of inverses (a harmonic mean up to
-// the factor NL), which the worst beams dominate but which no single beam can drive far
-// below the others; BeamCombination::Product is the usual independent-beam product
-// (Thrun et al. 2005, eq. 6.2), kept for comparison (bench-localization --combination).
+// Eq. (6) combines the beams by the inverse of the sum of their inverses (the harmonic
+// mean divided by NL), close to the smallest L_j: one ray that meets a wall the laser
+// did not see (delta of metres > 0) decides the particle's weight, and a particle that
+// sees nothing at all (every delta <= 0, each L_j >= beta / RMAX) can outscore one a
+// few centimetres from the truth whose rays graze a corner. BeamCombination::Product is
+// the usual independent-beam product (Thrun et al. 2005, eq. 6.2), which
+// ParticleFilterOptions::robust() uses; bench-localization measures both.
 // Both are computed as logarithms so that no weight underflows.
 //
-// Beyond the seed, gamma adds a uniform floor on both sides, gamma U(-RMAX, RMAX): eq. (5)
-// floors only readings shorter than expected, so a particle that sees nothing (open
-// space, every delta <= 0) outscores one a few centimetres off whose rays graze a corner
-// (a few deltas of metres > 0); the floor bounds what one such ray can cost.
+// Beyond the seed, gamma adds a uniform floor on both sides, gamma U(-RMAX, RMAX) (Thrun
+// et al.'s z_rand): eq. (5) floors only readings shorter than expected; the floor bounds
+// what one grazing ray can cost.
 #include <cstddef>
 
 namespace fleetmap::localization {

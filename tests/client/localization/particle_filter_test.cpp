@@ -94,13 +94,17 @@ TEST(ParticleFilter, EstimateReportsTheHeaviestCluster) {
   ParticleFilter f(m, small(1000));
   f.init_pose({2, 2, 0}, 0.05, 0.01);
   // Two hypotheses 10 m apart: the mean lies between them, the pose on the heavier.
-  auto& poses = const_cast<std::vector<Pose>&>(f.poses());
+  std::vector<Pose> poses = f.poses();
   for (size_t i = 0; i < 400; ++i) poses[i].x += 10;
+  f.set_particles(poses, std::vector<double>(poses.size(), 2.0));
+  EXPECT_NEAR(f.weights()[0], 1.0 / 1000, 1e-15);  // normalized
   const PoseEstimate e = f.estimate();
   EXPECT_NEAR(e.mean.x, 6, 0.05);
   EXPECT_NEAR(e.pose.x, 2, 0.05);
   EXPECT_NEAR(e.cluster_weight, 0.6, 1e-9);
   EXPECT_FALSE(e.converged);
+  EXPECT_THROW(f.set_particles(poses, std::vector<double>(3, 1.0)), std::invalid_argument);
+  EXPECT_THROW(f.set_particles(poses, std::vector<double>(poses.size(), 0.0)), std::invalid_argument);
 }
 
 TEST(ParticleFilter, SetMapKeepsParticlesAndWeights) {

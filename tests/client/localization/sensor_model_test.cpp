@@ -74,6 +74,17 @@ TEST(SensorModel, HarmonicWeightFallsBackToLogsWithoutLosingPrecision) {
   EXPECT_NEAR(lw, m.log_likelihood(15.0), 1e-9);
 }
 
+TEST(SensorModel, GammaFloorsBothSides) {
+  SensorModelOptions o;
+  o.gamma = 0.1;  // not in the seed: + 0.1 U(-15, 15), 0.1 / 30 on [-RMAX, RMAX]
+  const SensorModel m(o);
+  EXPECT_NEAR(m.likelihood(3.0), 1.2151765699646572e-08 + 0.1 / 30, 1e-15);
+  EXPECT_NEAR(m.likelihood(-3.0), 0.006666678818432367 + 0.1 / 30, 1e-15);
+  EXPECT_NEAR(m.likelihood(0.0), 0.8045512274695321 + 0.1 / 30, 1e-12);
+  EXPECT_LT(m.likelihood(16.0), 1e-200);
+  EXPECT_NEAR(m.log_likelihood(14.0), std::log(0.1 / 30), 1e-12);
+}
+
 TEST(SensorModel, RejectsMeaninglessParameters) {
   SensorModelOptions o;
   o.sigma_m = 0;
