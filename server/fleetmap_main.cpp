@@ -12,6 +12,7 @@
 #include "server/map_commands.h"
 #include "server/plan_command.h"
 #include "server/robot_commands.h"
+#include "server/scan_command.h"
 #include "server/topo_commands.h"
 #include "protocol/fleet_store.h"
 
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
   add_map_commands(app, ctx, &code);
   add_plan_command(app, ctx, &code);
   add_robot_commands(app, ctx, &code);
+  add_scan_command(app, ctx, &code);
   add_topo_commands(app, ctx, &code);
   try {
     app.parse(argc, argv);

@@ -18,6 +18,7 @@
 #include "protocol/fleet_store.h"
 #include "protocol/map_store.h"
 #include "server/exit_codes.h"
+#include "server/map_source.h"
 
 namespace fleetmap {
 namespace {
@@ -39,8 +40,7 @@ void add_read_options(CLI::App* cmd, ReadOptions& o) {
 
 bool is_amrl(const ReadOptions& o, const std::string& file) {
   if (o.format != "auto") return o.format == "amrl";
-  const std::string suffix = ".vectormap.txt";
-  return file.size() >= suffix.size() && file.compare(file.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return is_amrl_file(file);
 }
 
 // Reads and validates a map file; prints what the AMRL importer skipped.

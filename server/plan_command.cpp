@@ -1,4 +1,5 @@
 #include "server/plan_command.h"
+#include "server/map_source.h"
 
 #include <cmath>
 #include <cstdio>
@@ -34,15 +35,8 @@ double parse_coordinate(const std::string& text, const char* name) {
 }
 
 Map load_map(const PlanArgs& a, CliContext& ctx, std::string* name) {
-  if (a.file.empty()) {
-    *name = a.positional[0];
-    return MapStore(ctx.connection()).load(*name);
-  }
-  *name = a.file;
-  const std::string suffix = ".vectormap.txt";
-  if (a.file.size() >= suffix.size() && a.file.compare(a.file.size() - suffix.size(), suffix.size(), suffix) == 0)
-    return read_amrl_file(a.file, AmrlOptions{});
-  return read_seed_file(a.file);
+  *name = a.file.empty() ? a.positional[0] : a.file;
+  return load_map_source(a.file.empty() ? a.positional[0] : "", a.file, ctx);
 }
 
 std::string describe(Point p) {

@@ -1,0 +1,19 @@
+#include "server/map_source.h"
+
+#include "common/amrl_import.h"
+#include "common/seed_format.h"
+#include "protocol/map_store.h"
+
+namespace fleetmap {
+
+bool is_amrl_file(const std::string& file) {
+  const std::string suffix = ".vectormap.txt";
+  return file.size() >= suffix.size() && file.compare(file.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+Map load_map_source(const std::string& name, const std::string& file, CliContext& ctx) {
+  if (file.empty()) return MapStore(ctx.connection()).load(name);
+  return is_amrl_file(file) ? read_amrl_file(file, AmrlOptions{}) : read_seed_file(file);
+}
+
+}  // namespace fleetmap
