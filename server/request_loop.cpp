@@ -65,6 +65,7 @@ void RequestLoop::run() {
       if (housekeeping_ && std::chrono::steady_clock::now() >= next_housekeeping_) {
         done += push_operations();
         mark_lost_robots();
+        drop_orphan_requests();
         next_housekeeping_ = std::chrono::steady_clock::now() + std::chrono::milliseconds(100);
       }
     } catch (const mysqlpp::BadQuery& e) {
@@ -116,19 +117,6 @@ size_t RequestLoop::serve_batch() {
     if (!robot.removed) robots.seen(robot.id, reqs.back().created_at);
     handled += reqs.size();
   }
-  // Requests from accounts that are no robot (inserted by hand by an administrator):
-  // nobody can read an answer; drop them so they do not block the queue head.
-  if (claimed.size() < accounts.size()) {
-    mysqlpp::Query q = conn_->query();
-    q << "SELECT id FROM rr WHERE db_user NOT IN (SELECT db_user FROM robots) LIMIT 100";
-    std::vector<unsigned long long> orphans;
-    for (const mysqlpp::Row& r : q.store()) orphans.push_back(std::stoull(std::string(r[0])));
-    if (!orphans.empty()) {
-      spdlog::warn("worker {}: dropping {} request(s) from accounts that are no robot", worker_, orphans.size());
-      queue.remove(orphans);
-      handled += orphans.size();
-    }
-  }
   tx.commit();
   return handled;
 }
@@ -173,6 +161,19 @@ void RequestLoop::handle(RobotRow& robot, const Request& req, RequestQueue& queu
                            encode(ErrorParams{req.id, ErrorCode::Internal, e.what()}), std::nullopt});
   }
   for (const Answer& a : ctx.answers) queue.insert(a);
+}
+
+size_t RequestLoop::drop_orphan_requests() {
+  // Requests from accounts that are no robot (inserted by hand by an administrator):
+  // nobody can read an answer; drop them so they do not sit at the head of the queue.
+  // Housekeeping, not every batch: the scan grows with the queue.
+  mysqlpp::Query q = conn_->query("SELECT id FROM rr WHERE db_user NOT IN (SELECT db_user FROM robots) LIMIT 100");
+  std::vector<unsigned long long> orphans;
+  for (const mysqlpp::Row& r : q.store()) orphans.push_back(std::stoull(std::string(r[0])));
+  if (orphans.empty()) return 0;
+  spdlog::warn("dropping {} request(s) from accounts that are no robot", orphans.size());
+  RequestQueue(*conn_).remove(orphans);
+  return orphans.size();
 }
 
 size_t RequestLoop::push_operations() {

@@ -33,6 +33,7 @@ class RequestLoop {
   size_t serve_batch();
   size_t push_operations();
   size_t mark_lost_robots();
+  size_t drop_orphan_requests();
 
  private:
   void connect_with_retry();
