@@ -11,10 +11,16 @@
 // Modes:
 //   floor   the bare database path: the same robots and traffic, answered by a minimal
 //           loop inside this program (claim rr rows FOR UPDATE SKIP LOCKED, insert a tiny
-//           sa row, delete the rr rows, commit, busy-poll). The figure the server is
-//           compared with, measured in the same run.
+//           sa row, delete the rr rows, commit, busy-poll; plain C API, two round trips
+//           per batch). The figure the server is compared with, measured in the same run.
 //   server  the same robots against running fleetmap-server process(es) (--server-pid for
-//           their CPU use).
+//           their CPU use). Robots send Ready first and keep alive while the others do.
+//   lean    a prototype of a batched server inside this program, for the proposals: the
+//           server's durable work (trajectories, robots pose and last_seen, gps_fixes, the
+//           GetMap window from the spatial index as a seed-text SetMap, OpAck, rr deleted)
+//           with robots claimed FOR UPDATE SKIP LOCKED, but in ~4 round trips per batch
+//           (multi-row statements; writes and COMMIT as one multi-statement) and the
+//           server's idle back-off. Not a server: no validation, no tasks, no Ready.
 //   idle    the servers' CPU with no traffic at all for --seconds, then the latency of lone
 //           requests (one robot, one request at a time, 100-300 ms apart).
 //   report  prints the tables of a results file (JSON lines written by the other modes).
@@ -325,7 +331,7 @@ struct Robot {
   enum Stage { kIdle, kConnect, kClean, kInsert, kSelect, kStore, kDelete, kDead } stage = kIdle;
   int wait = 0;
   TimePoint deadline{};
-  bool connected = false, cleaned = false, setup_counted = false, registered = false, ready_sent = false;
+  bool connected = false, cleaned = false, setup_counted = false, registered = false;
   std::optional<unsigned> robot_id;
   double alive_s = 1;
   std::string sql;
@@ -452,7 +458,6 @@ void RobotThread::finished(Robot& r) {
     case Robot::kClean:
       r.cleaned = true;
       if (needs_ready()) {
-        r.ready_sent = true;
         r.queue.push_back({kReady, now});
       }
       break;
@@ -1104,12 +1109,14 @@ const Json* floor_for(const std::vector<Json>& rows, const Json& r) {
   return best;
 }
 
-double worst_p99(const Json& r) {
-  return std::max(num(r, {"answer_ms", "GetMap", "p99"}), num(r, {"answer_ms", "SendGPS", "p99"}));
+// The goals apply to answered requests: GetMap and SendGPS together (more samples than
+// either alone, so that a p99 of a small fleet is not just its maximum).
+double answered(const Json& r, const char* p) {
+  const double v = num(r, {"answer_ms", "answered", p});
+  return std::isnan(v) ? std::max(num(r, {"answer_ms", "GetMap", p}), num(r, {"answer_ms", "SendGPS", p})) : v;
 }
-double worst_p50(const Json& r) {
-  return std::max(num(r, {"answer_ms", "GetMap", "p50"}), num(r, {"answer_ms", "SendGPS", "p50"}));
-}
+double worst_p99(const Json& r) { return answered(r, "p99"); }
+double worst_p50(const Json& r) { return answered(r, "p50"); }
 
 std::string row_name(const Json& r) {
   if (r["mode"] == "server") return std::to_string(r.value("server_procs", 1)) + " proc";
@@ -1197,8 +1204,9 @@ void print_report(const std::string& file, const std::string& phase) {
     for (const Json& r : v) {
       const Json* f = floor_for(rows, r);
       const double p50 = worst_p50(r), p99 = worst_p99(r);
-      std::printf("%s at %d robots: p50 <= 5 ms %s (%.2f), p99 <= 20 ms %s (%.2f)", row_name(r).c_str(),
-                  r["robots"].get<int>(), p50 <= 5 ? "met" : "MISSED", p50, p99 <= 20 ? "met" : "MISSED", p99);
+      std::printf("%s at %d robots, answered requests: p50 <= 5 ms %s (%.2f), p99 <= 20 ms %s (%.2f)",
+                  row_name(r).c_str(), r["robots"].get<int>(), p50 <= 5 ? "met" : "MISSED", p50,
+                  p99 <= 20 ? "met" : "MISSED", p99);
       if (f) {
         const double f50 = worst_p50(*f), f99 = worst_p99(*f);
         std::printf(", <= 3x floor: p50 %s (%.1fx), p99 %s (%.1fx)", p50 <= 3 * f50 ? "met" : "MISSED", p50 / f50,
@@ -1485,6 +1493,12 @@ int main(int argc, char** argv) {
     out["rate_sent"] = sent / window_s;
     out["unanswered"] = unanswered;
     out["counts"] = counts;
+    {
+      Samples all;
+      all.merge(total.kind[kGetMap].latency);
+      all.merge(total.kind[kSendGps].latency);
+      if (!all.v.empty()) answer["answered"] = all.summary();
+    }
     out["answer_ms"] = answer;
     out["lag_ms"] = lag;
     out["insert_ms"] = insert;
@@ -1535,10 +1549,9 @@ int main(int argc, char** argv) {
         f2(num(cpu, {"db_per_s", "Questions"}), "%.0f").c_str(),
         f2(num(cpu, {"db_per_s", "Com_commit"}), "%.0f").c_str(),
         f2(num(cpu, {"db_per_s", "Innodb_data_fsyncs"}), "%.0f").c_str());
-    {
-      const double w = std::max(num(out, {"answer_ms", "GetMap", "p99"}), num(out, {"answer_ms", "SendGPS", "p99"}));
-      if (!std::isnan(w)) std::printf("  worst answered p99 (GetMap, SendGPS): %.2f ms\n", w);
-    }
+    if (answer.contains("answered"))
+      std::printf("  answered (GetMap+SendGPS): p50 %s p99 %s ms\n", fmt(answer["answered"], "p50").c_str(),
+                  fmt(answer["answered"], "p99").c_str());
     if (!backlog.v.empty())
       std::printf("  rr backlog seen by the monitor: p50 %s, max %s rows (%llu snapshots)\n",
                   fmt(out["backlog"], "p50", "%.0f").c_str(), fmt(out["backlog"], "max", "%.0f").c_str(),
