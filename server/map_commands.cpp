@@ -66,15 +66,6 @@ std::string describe_map(const Map& m) {
   return s;
 }
 
-void write_output(const std::string& text, const std::string& file) {
-  if (file.empty() || file == "-") {
-    std::cout << text;
-    return;
-  }
-  std::ofstream out(file, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write '" + file + "'");
-}
 
 // Import progress on stderr: a live line on a terminal, every 10 % otherwise.
 ImportProgress progress_printer() {

@@ -14,6 +14,7 @@
 #include "protocol/map_store.h"
 #include "protocol/topo_store.h"
 #include "server/exit_codes.h"
+#include "server/map_source.h"
 
 namespace fleetmap {
 namespace {
@@ -79,15 +80,6 @@ int resolve_end(const TopoGraph& g, const std::string& arg, const char* which) {
   return id;
 }
 
-void write_output(const std::string& text, const std::string& file) {
-  if (file.empty() || file == "-") {
-    std::cout << text;
-    return;
-  }
-  std::ofstream out(file, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write '" + file + "'");
-}
 
 }  // namespace
 
