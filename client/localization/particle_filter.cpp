@@ -26,6 +26,32 @@ std::mt19937_64 seeded(uint64_t seed, uint64_t stream) {
   return std::mt19937_64(seq);
 }
 
+// Weighted mean of poses[i] for the i where take(i): (x, y) and circular theta; the sum
+// of weights, and of their cosines and sines, for the spreads.
+struct WeightedMean {
+  Pose pose;
+  double weight = 0, cos_sum = 0, sin_sum = 0;
+};
+
+template <typename Take>
+WeightedMean weighted_mean(const std::vector<Pose>& poses, const std::vector<double>& weights, Take take) {
+  WeightedMean m;
+  double mx = 0, my = 0;
+  for (size_t i = 0; i < poses.size(); ++i) {
+    if (!take(i)) continue;
+    const double w = weights[i];
+    m.weight += w;
+    mx += w * poses[i].x;
+    my += w * poses[i].y;
+    m.cos_sum += w * std::cos(poses[i].theta);
+    m.sin_sum += w * std::sin(poses[i].theta);
+  }
+  if (m.weight > 0) m.pose = {mx / m.weight, my / m.weight, std::atan2(m.sin_sum, m.cos_sum)};
+  return m;
+}
+
+uint64_t cell_key(int64_t ix, int64_t iy) { return static_cast<uint64_t>(ix) << 32 ^ static_cast<uint32_t>(iy); }
+
 }  // namespace
 
 ParticleFilterOptions ParticleFilterOptions::robust() {
@@ -206,41 +232,10 @@ void ParticleFilter::resample() {
   ++resamplings_;
 }
 
-namespace {
-
-// Weighted mean of poses[i] for the i where take(i): (x, y) and circular theta; the sum
-// of weights, and of their cosines and sines, for the spreads.
-struct WeightedMean {
-  Pose pose;
-  double weight = 0, cos_sum = 0, sin_sum = 0;
-};
-
-template <typename Take>
-WeightedMean weighted_mean(const std::vector<Pose>& poses, const std::vector<double>& weights, Take take) {
-  WeightedMean m;
-  double mx = 0, my = 0;
-  for (size_t i = 0; i < poses.size(); ++i) {
-    if (!take(i)) continue;
-    const double w = weights[i];
-    m.weight += w;
-    mx += w * poses[i].x;
-    my += w * poses[i].y;
-    m.cos_sum += w * std::cos(poses[i].theta);
-    m.sin_sum += w * std::sin(poses[i].theta);
-  }
-  if (m.weight > 0) m.pose = {mx / m.weight, my / m.weight, std::atan2(m.sin_sum, m.cos_sum)};
-  return m;
-}
-
-uint64_t cell_key(int64_t ix, int64_t iy) { return static_cast<uint64_t>(ix) << 32 ^ static_cast<uint32_t>(iy); }
-
-}  // namespace
-
 void ParticleFilter::roughen() {
   if (!(options_.roughening > 0) || poses_.size() < 2) return;
   // Per-dimension standard deviations of the (equally weighted) resampled cloud.
-  const size_t count = poses_.size();
-  const double n = static_cast<double>(count);
+  const double n = static_cast<double>(poses_.size());
   const WeightedMean m = weighted_mean(poses_, weights_, [](size_t) { return true; });
   double vx = 0, vy = 0;
   for (const Pose& p : poses_) {

@@ -22,12 +22,14 @@ namespace fleetmap::localization {
 // Indices of the n particles drawn; weights need not be normalized, must not all be 0.
 std::vector<size_t> low_variance_resample(const std::vector<double>& weights, size_t n, std::mt19937_64& rng);
 
+// The defaults are Nav2 AMCL's (kld_err, kld_z 0.99, its k-d tree's cells, min_particles),
+// with the seed's NP as the maximum.
 struct KldOptions {
-  double epsilon = 0.05;               // bound on the K-L distance
-  double delta = 0.01;                 // probability that the bound does not hold
-  double bin_xy = 0.5;                 // metres
-  double bin_theta = deg2rad(10.0);    // radians
-  size_t min_particles = 300;
+  double epsilon = 0.05;             // bound on the K-L distance
+  double delta = 0.01;               // probability that the bound does not hold
+  double bin_xy = 0.5;               // metres
+  double bin_theta = deg2rad(10.0);  // radians
+  size_t min_particles = 500;
   size_t max_particles = 6000;
 };
 
