@@ -10,6 +10,7 @@
 #include "server/cli_context.h"
 #include "server/exit_codes.h"
 #include "server/map_commands.h"
+#include "server/object_commands.h"
 #include "server/plan_command.h"
 #include "server/robot_commands.h"
 #include "server/scan_command.h"
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
   add_robot_commands(app, ctx, &code);
   add_scan_command(app, ctx, &code);
   add_topo_commands(app, ctx, &code);
+  add_object_commands(app, ctx, &code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
