@@ -14,6 +14,7 @@
 #include "server/plan_command.h"
 #include "server/robot_commands.h"
 #include "server/scan_command.h"
+#include "server/slice_command.h"
 #include "server/topo_commands.h"
 #include "protocol/fleet_store.h"
 
@@ -26,6 +27,7 @@ int main(int argc, char** argv) {
   ctx.add_connection_options(app);
   int code = exit_code::kOk;
   add_map_commands(app, ctx, &code);
+  add_slice_command(app, ctx, &code);
   add_plan_command(app, ctx, &code);
   add_robot_commands(app, ctx, &code);
   add_scan_command(app, ctx, &code);
