@@ -15,6 +15,8 @@ using Polygon = std::vector<Point>;
 
 // What is wrong with a ring, or nothing: fewer than 3 distinct points, zero area, a
 // non-finite coordinate, or two edges that cross or touch away from their shared vertex.
+// Two equal consecutive vertices (a zero-length edge) are refused too. The tests are
+// exact (orientation signs without rounding), so a point one ulp off an edge is off it.
 std::optional<std::string> polygon_problem(const Polygon& ring);
 
 // The boundary counts as inside (a point on a keep-out zone's edge is in it).
