@@ -183,35 +183,55 @@ std::vector<ObjectRow> rows_for(mysqlpp::Connection& c, const std::vector<Object
   return out;
 }
 
-// The candidate search of near() and list(): per object, its smallest footprint distance
-// to p, nearest first, ties by key. With box_half: only elements whose bounding box meets
-// the square of that half side around p, found with the spatial index; without: every
-// element of the map (the baseline). The elements' table comes first (STRAIGHT_JOIN):
-// see 20_views.sql on MDEV-26123.
-std::string near_sql(unsigned map_id, Point p, const std::string& tag, std::optional<double> box_half,
-                     std::optional<size_t> limit, std::optional<double> within, mysqlpp::Connection& c) {
+// The candidate search of near() and list(): the elements of the map's live objects
+// (with the tag, if any). With box_half, only those whose bounding box meets the square
+// of that half side around p, found with the spatial index; without, every element of
+// the map (the baseline). The elements' table comes first (STRAIGHT_JOIN): see
+// 20_views.sql on MDEV-26123.
+std::string candidates_sql(unsigned map_id, Point p, const std::string& tag, std::optional<double> box_half,
+                           mysqlpp::Connection& c) {
   mysqlpp::Query q = c.query();
-  q << "SELECT e.object_id, o.object_key, MIN(ST_Distance(e.footprint, " << point_sql(p) << ")) AS d"
-    << " FROM object_elements e " << (box_half ? "FORCE" : "IGNORE") << " INDEX (" << kIndex << ")"
+  q << "SELECT e.object_id, o.object_key, ST_AsBinary(e.footprint) FROM object_elements e "
+    << (box_half ? "FORCE" : "IGNORE") << " INDEX (" << kIndex << ")"
     << " STRAIGHT_JOIN env_objects o ON o.id = e.object_id WHERE e.map_id = " << map_id;
   if (box_half) q << " AND MBRIntersects(e.footprint, " << box_sql(p, *box_half) << ")";
   if (!tag.empty()) q << " AND o.tag = " << mysqlpp::quote << tag;
-  q << " AND " << kLive << " GROUP BY e.object_id, o.object_key";
-  if (within) q << " HAVING d <= " << n(*within);
-  q << " ORDER BY d, o.object_key";
-  if (limit) q << " LIMIT " << *limit;
+  q << " AND " << kLive;
   return q.str();
 }
 
-std::vector<ObjectRow> run_near(mysqlpp::Connection& c, const std::string& sql) {
+// Per object, its least element distance to p, nearest first, ties by key; at most
+// limit objects, and only those within `within`. The distances are computed here,
+// exactly (common/polygon.h): MariaDB 10.11's ST_Distance between a polygon and a point
+// is approximate (off by up to 0.17 m on 9 of 200 random boxes; docs/semantic-layer.md).
+std::vector<ObjectRow> nearest(mysqlpp::Connection& c, const std::string& sql, Point p, std::optional<size_t> limit,
+                               std::optional<double> within, size_t* candidates = nullptr) {
+  std::unordered_map<unsigned long long, ObjectRow> by_id;
   mysqlpp::Query q = c.query(sql);
+  mysqlpp::UseQueryResult res = q.use();
+  while (mysqlpp::Row r = res.fetch_row()) {
+    const double d = distance_to_polygon(p, polygon_from_wkb(r[2]));
+    auto [it, fresh] = by_id.try_emplace(sql::to_uint(r[0]));
+    if (fresh) {
+      it->second.id = it->first;
+      it->second.key = sql::to_string(r[1]);
+      it->second.distance = d;
+    } else {
+      it->second.distance = std::min(*it->second.distance, d);
+    }
+  }
+  if (candidates) *candidates = by_id.size();
   std::vector<ObjectRow> out;
-  for (const mysqlpp::Row& r : q.store()) {
-    ObjectRow o;
-    o.id = sql::to_uint(r[0]);
-    o.key = sql::to_string(r[1]);
-    o.distance = sql::to_double(r[2]);
-    out.push_back(std::move(o));
+  for (auto& [id, o] : by_id)
+    if (!within || *o.distance <= *within) out.push_back(std::move(o));
+  auto closer = [](const ObjectRow& a, const ObjectRow& b) {
+    return *a.distance != *b.distance ? *a.distance < *b.distance : a.key < b.key;
+  };
+  if (limit && out.size() > *limit) {
+    std::partial_sort(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(*limit), out.end(), closer);
+    out.resize(*limit);
+  } else {
+    std::sort(out.begin(), out.end(), closer);
   }
   return out;
 }
@@ -307,16 +327,15 @@ SceneImportReport SceneStore::import(const std::string& map, const Scene& scene,
     report.replaced_objects = c_.query("DELETE FROM env_objects WHERE source = 'imported' AND map_id = " + mid).execute().rows();
     report.replaced_avoided = c_.query("DELETE FROM avoided_areas WHERE map_id = " + mid).execute().rows();
     execute(c_, "DELETE FROM map_bounds WHERE map_id = " + mid);
-  } else {
-    const char* hint = "; use --replace to replace the map's imported objects and avoided areas";
-    std::vector<std::string> keys;
-    for (const EnvObject& o : scene.objects) keys.push_back(o.id);
-    if (auto k = first_existing(c_, "env_objects", "object_key", mid, keys)) throw SceneKeyExists(map, "an object", *k, hint);
-    keys.clear();
-    for (const AvoidedArea& a : scene.avoided) keys.push_back(a.id);
-    if (auto k = first_existing(c_, "avoided_areas", "area_key", mid, keys))
-      throw SceneKeyExists(map, "an avoided area", *k, hint);
   }
+  // Keys still stored: everything without replace; with it, a robot's observation.
+  const char* hint = options.replace ? "" : "; use --replace to replace the map's imported objects and avoided areas";
+  std::vector<std::string> keys;
+  for (const EnvObject& o : scene.objects) keys.push_back(o.id);
+  if (auto k = first_existing(c_, "env_objects", "object_key", mid, keys)) throw SceneKeyExists(map, "an object", *k, hint);
+  keys.clear();
+  for (const AvoidedArea& a : scene.avoided) keys.push_back(a.id);
+  if (auto k = first_existing(c_, "avoided_areas", "area_key", mid, keys)) throw SceneKeyExists(map, "an avoided area", *k, hint);
 
   BatchInsert objects(c_, "INSERT INTO env_objects (map_id, object_key, tag, dynamic, source) VALUES ");
   for (const EnvObject& o : scene.objects) {
@@ -405,8 +424,8 @@ std::vector<ObjectRow> SceneStore::list(const std::string& map, const ObjectFilt
     if (!(filter.radius >= 0 && std::isfinite(filter.radius)))
       throw std::invalid_argument("expected a finite radius >= 0, got " + n(filter.radius));
     // Whatever lies within the radius meets the square around the circle.
-    return rows_for(c_, run_near(c_, near_sql(mid, *filter.centre, filter.tag, filter.radius, std::nullopt,
-                                              filter.radius, c_)));
+    return rows_for(c_, nearest(c_, candidates_sql(mid, *filter.centre, filter.tag, filter.radius, c_),
+                                *filter.centre, std::nullopt, filter.radius));
   }
   mysqlpp::Query q = c_.query();
   q << kRowColumns << " WHERE o.map_id = " << mid << " AND " << kLive;
@@ -432,9 +451,7 @@ std::vector<ObjectRow> SceneStore::near(unsigned mid, Point p, const std::string
   if (k == 0) return {};
   if (access == NearAccess::FullScan) {
     st.rounds = 1;
-    auto found = run_near(c_, near_sql(mid, p, tag, std::nullopt, k, std::nullopt, c_));
-    st.candidates = found.size();
-    return rows_for(c_, found);
+    return rows_for(c_, nearest(c_, candidates_sql(mid, p, tag, std::nullopt, c_), p, k, std::nullopt, &st.candidates));
   }
   // Grow the box until it holds k objects and the k-th is no farther than the box's half
   // side: anything nearer meets the disc of that radius, hence the box, so the index
@@ -449,8 +466,7 @@ std::vector<ObjectRow> SceneStore::near(unsigned mid, Point p, const std::string
   for (;;) {
     ++st.rounds;
     st.box_half = half.value_or(INFINITY);
-    auto found = run_near(c_, near_sql(mid, p, tag, half, k, std::nullopt, c_));
-    st.candidates = found.size();
+    auto found = nearest(c_, candidates_sql(mid, p, tag, half, c_), p, k, std::nullopt, &st.candidates);
     if (!half || (found.size() == k && *found.back().distance <= *half)) return rows_for(c_, found);
     if (*half >= reach) half.reset();
     else half = *half * 2;
@@ -459,7 +475,7 @@ std::vector<ObjectRow> SceneStore::near(unsigned mid, Point p, const std::string
 
 std::string SceneStore::near_index(const std::string& map, Point p, const std::string& tag, double box_half) {
   const unsigned mid = map_id(map);
-  mysqlpp::Query q = c_.query("EXPLAIN " + near_sql(mid, p, tag, box_half, 5, std::nullopt, c_));
+  mysqlpp::Query q = c_.query("EXPLAIN " + candidates_sql(mid, p, tag, box_half, c_));
   for (const mysqlpp::Row& r : q.store())
     if (std::string(r["table"]) == "e") return r["key"].is_null() ? "" : std::string(r["key"]);
   return "";
@@ -566,16 +582,14 @@ Observation SceneStore::record_observation(unsigned map_id, unsigned robot_id, P
 
   // Seen again: the same robot, the same name, near the footprint it reported last.
   q.reset();
-  q << "SELECT o.id, o.object_key, MIN(ST_Distance(e.footprint, " << point_sql(p) << ")) AS d"
-    << " FROM env_objects o JOIN object_elements e ON e.object_id = o.id"
+  q << "SELECT o.id, o.object_key, ST_AsBinary(e.footprint) FROM env_objects o JOIN object_elements e ON e.object_id = o.id"
     << " WHERE o.map_id = " << mid << " AND o.robot_id = " << rid << " AND o.label = " << mysqlpp::quote << label
-    << " AND o.source = 'observed' AND o.expires_at > " << when << " GROUP BY o.id, o.object_key HAVING d <= "
-    << n(kSamePlace) << " ORDER BY d, o.id LIMIT 1";
-  res = q.store();
+    << " AND o.source = 'observed' AND o.expires_at > " << when;
+  const std::vector<ObjectRow> same = nearest(c_, q.str(), p, 1, kSamePlace);
   Observation out;
-  if (!res.empty()) {
-    out.object_id = sql::to_uint(res[0][0]);
-    out.key = sql::to_string(res[0][1]);
+  if (!same.empty()) {
+    out.object_id = same[0].id;
+    out.key = same[0].key;
     out.refreshed = true;
     const std::string id = std::to_string(out.object_id);
     execute(c_, "UPDATE env_objects SET seen_at = " + when + ", expires_at = " + expires + " WHERE id = " + id);

@@ -95,7 +95,8 @@ class SceneStore {
 
   // Stores the scene's objects, avoided areas and bounds into the stored map `map` in one
   // transaction: afterwards either all of it is there or nothing changed. Throws
-  // MapNotFound, SceneKeyExists (unless replace), UnknownTag (unless add_tags),
+  // MapNotFound, SceneKeyExists (a key stored already: without replace any, with it a
+  // robot's observation), UnknownTag (unless add_tags),
   // std::invalid_argument for a scene the model would not accept (duplicate keys, bad
   // polygons). Observed objects are left alone.
   SceneImportReport import(const std::string& map, const Scene& scene, const SceneImportOptions& options);
