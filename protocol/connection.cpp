@@ -7,11 +7,12 @@ std::string describe(const DbSettings& s) {
   return (s.user.empty() ? std::string("(no user)") : s.user) + "@" + where + "/" + s.database;
 }
 
-std::unique_ptr<mysqlpp::Connection> connect(const DbSettings& s) {
+std::unique_ptr<mysqlpp::Connection> connect(const DbSettings& s, bool multi_statements) {
   auto c = std::make_unique<mysqlpp::Connection>(true);
   try {
     c->set_option(new mysqlpp::SetCharsetNameOption("utf8mb4"));
     c->set_option(new mysqlpp::ConnectTimeoutOption(10));
+    if (multi_statements) c->set_option(new mysqlpp::MultiStatementsOption(true));
     const std::string server = s.socket.empty() ? s.host : s.socket;
     c->connect(s.database.c_str(), server.c_str(), s.user.c_str(), s.password.c_str(),
                s.socket.empty() ? s.port : 0);

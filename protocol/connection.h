@@ -18,8 +18,9 @@ class DbError : public std::runtime_error {
 };
 
 // Connects (utf8mb4, READ COMMITTED: a server's SELECT ... FOR UPDATE must not take gap
-// locks that block robots' inserts, SPEC 9). Throws DbError.
-std::unique_ptr<mysqlpp::Connection> connect(const DbSettings& s);
+// locks that block robots' inserts, SPEC 9). Throws DbError. multi_statements lets one
+// round trip carry several statements (the server's batched writes, protocol/write_batch.h).
+std::unique_ptr<mysqlpp::Connection> connect(const DbSettings& s, bool multi_statements = false);
 
 // Where a connection goes, for logs: "fleetmap_operator@/path/sock/fleetmap".
 std::string describe(const DbSettings& s);
@@ -33,6 +34,8 @@ class Transaction {
   explicit Transaction(mysqlpp::Connection& c);
   ~Transaction();
   void commit();
+  // The COMMIT went out another way (a multi-statement, protocol/write_batch.h).
+  void committed_by_batch() { done_ = true; }
   Transaction(const Transaction&) = delete;
   Transaction& operator=(const Transaction&) = delete;
 

@@ -1,6 +1,7 @@
 #include "protocol/request_queue.h"
 
 #include <algorithm>
+#include <map>
 
 #include "protocol/sql_util.h"
 
@@ -21,20 +22,38 @@ std::vector<std::string> RequestQueue::waiting_accounts(size_t limit) {
   return out;
 }
 
-std::vector<Request> RequestQueue::requests_of(const std::string& db_user, size_t limit) {
+namespace {
+
+constexpr const char* kRequestColumns = "id, robot_id, db_user, op, params, payload, created_at";
+
+Request read_request(const mysqlpp::Row& r) {
+  Request req;
+  req.id = sql::to_uint(r[0]);
+  if (!r[1].is_null()) req.robot_id = static_cast<unsigned>(sql::to_uint(r[1]));
+  req.db_user = sql::to_string(r[2]);
+  req.op = sql::to_string(r[3]);
+  req.params = sql::to_string(r[4]);
+  if (!r[5].is_null()) req.payload = sql::to_string(r[5]);
+  req.created_at = sql::to_string(r[6]);
+  return req;
+}
+
+}  // namespace
+
+std::vector<Request> RequestQueue::requests_of(const std::vector<std::string>& accounts, size_t per_account,
+                                               size_t total) {
+  if (accounts.empty()) return {};
   mysqlpp::Query q = c_.query();
-  q << "SELECT id, robot_id, db_user, op, params, payload, created_at FROM rr WHERE db_user = " << mysqlpp::quote
-    << db_user << " ORDER BY id LIMIT " << limit;
+  q << "SELECT " << kRequestColumns << " FROM rr WHERE db_user IN (";
+  for (size_t i = 0; i < accounts.size(); ++i) q << (i ? "," : "") << mysqlpp::quote << accounts[i];
+  q << ") ORDER BY id LIMIT " << total;
   std::vector<Request> out;
+  std::map<std::string, size_t> taken;
   for (const mysqlpp::Row& r : q.store()) {
-    Request req;
-    req.id = sql::to_uint(r[0]);
-    if (!r[1].is_null()) req.robot_id = static_cast<unsigned>(sql::to_uint(r[1]));
-    req.db_user = sql::to_string(r[2]);
-    req.op = sql::to_string(r[3]);
-    req.params = sql::to_string(r[4]);
-    if (!r[5].is_null()) req.payload = sql::to_string(r[5]);
-    req.created_at = sql::to_string(r[6]);
+    Request req = read_request(r);
+    // Past an account's share, its later requests wait for the next batch: what is taken
+    // stays a prefix of its queue, in id order.
+    if (++taken[req.db_user] > per_account) continue;
     out.push_back(std::move(req));
   }
   return out;

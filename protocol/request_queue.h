@@ -37,8 +37,9 @@ class RequestQueue {
   // Accounts with waiting requests, the longest-waiting first (a plain read: no locks).
   std::vector<std::string> waiting_accounts(size_t limit);
 
-  // One account's requests in id order.
-  std::vector<Request> requests_of(const std::string& db_user, size_t limit);
+  // The oldest requests of these accounts in id order: at most per_account of each (a
+  // prefix of each account's queue) and total in all.
+  std::vector<Request> requests_of(const std::vector<std::string>& accounts, size_t per_account, size_t total);
 
   unsigned long long insert(const Answer& a);  // the sa.id
   void remove(const std::vector<unsigned long long>& request_ids);

@@ -49,19 +49,20 @@ RobotRow RobotStore::read_robot(const mysqlpp::Row& r) {
   return b;
 }
 
-std::vector<RobotRow> RobotStore::claim(const std::vector<std::string>& accounts, size_t limit) {
-  // One account at a time, in the order given (longest waiting first): a single
-  // "IN (...) ORDER BY id LIMIT n" would always prefer low robot ids and starve the
-  // others under load, and would keep every row it read locked, not only those it took.
+std::vector<RobotRow> RobotStore::claim(const std::vector<std::string>& accounts) {
+  if (accounts.empty()) return {};
+  // No ORDER BY/LIMIT: InnoDB would lock in key order and always prefer the same
+  // accounts under load; the caller bounds the list and orders it by waiting time.
+  mysqlpp::Query q = c_.query();
+  q << "SELECT " << kRobotColumns << " FROM robots WHERE db_user IN (";
+  for (size_t i = 0; i < accounts.size(); ++i) q << (i ? "," : "") << mysqlpp::quote << accounts[i];
+  q << ") FOR UPDATE SKIP LOCKED";
+  std::vector<RobotRow> rows;
+  for (const mysqlpp::Row& r : q.store()) rows.push_back(read_robot(r));
   std::vector<RobotRow> out;
-  for (const std::string& account : accounts) {
-    if (out.size() >= limit) break;
-    mysqlpp::Query q = c_.query();
-    q << "SELECT " << kRobotColumns << " FROM robots WHERE db_user = " << mysqlpp::quote << account
-      << " FOR UPDATE SKIP LOCKED";
-    mysqlpp::StoreQueryResult res = q.store();
-    if (!res.empty()) out.push_back(read_robot(res[0]));
-  }
+  for (const std::string& account : accounts)
+    for (RobotRow& r : rows)
+      if (r.db_user == account) out.push_back(std::move(r));
   return out;
 }
 
@@ -73,13 +74,6 @@ std::optional<RobotRow> RobotStore::claim(unsigned robot_id) {
   return read_robot(res[0]);
 }
 
-void RobotStore::seen(unsigned id, const std::string& at) {
-  mysqlpp::Query q = c_.query();
-  q << "UPDATE robots SET last_seen = GREATEST(COALESCE(last_seen, 0), " << mysqlpp::quote << at
-    << "), state = IF(state = 'lost', 'ready', state) WHERE id = " << id;
-  q.execute();
-}
-
 void RobotStore::start_session(unsigned id, long long magic) {
   mysqlpp::Query q = c_.query();
   q << "UPDATE robots SET magic = " << magic << ", session_at = SYSDATE(6), state = 'ready' WHERE id = " << id;
@@ -89,25 +83,6 @@ void RobotStore::start_session(unsigned id, long long magic) {
 void RobotStore::set_state(unsigned id, const std::string& state) {
   mysqlpp::Query q = c_.query();
   q << "UPDATE robots SET state = " << mysqlpp::quote << state << " WHERE id = " << id;
-  q.execute();
-}
-
-void RobotStore::record_pose(unsigned id, const SendPosParams& p, const std::string& at) {
-  mysqlpp::Query q = c_.query();
-  q << "INSERT INTO trajectories (robot_id, t, x, y, theta, v, w, pos) VALUES (" << id << ", " << mysqlpp::quote << at
-    << ", " << n(p.x) << ", " << n(p.y) << ", " << n(p.theta) << ", " << n(p.v) << ", " << n(p.w) << ", Point("
-    << n(p.x) << ", " << n(p.y) << "))";
-  q.execute();
-  q.reset();
-  q << "UPDATE robots SET x = " << n(p.x) << ", y = " << n(p.y) << ", theta = " << n(p.theta) << ", v = " << n(p.v)
-    << ", state = IF(" << (p.v != 0 ? "TRUE" : "FALSE") << ", 'moving', IF(state = 'moving', 'ready', state)) WHERE id = " << id;
-  q.execute();
-}
-
-void RobotStore::record_gps(unsigned id, const SendGpsParams& p, std::optional<Point> xy, const std::string& at) {
-  mysqlpp::Query q = c_.query();
-  q << "INSERT INTO gps_fixes (robot_id, t, lat, lon, x, y) VALUES (" << id << ", " << mysqlpp::quote << at << ", "
-    << n(p.lat) << ", " << n(p.lon) << ", " << (xy ? n(xy->x) : "NULL") << ", " << (xy ? n(xy->y) : "NULL") << ")";
   q.execute();
 }
 
@@ -135,6 +110,22 @@ std::optional<TaskRow> RobotStore::open_task(unsigned robot_id) {
   mysqlpp::StoreQueryResult res = q.store();
   if (res.empty()) return std::nullopt;
   return read_task(res[0]);
+}
+
+std::vector<TaskRow> RobotStore::open_tasks(const std::vector<unsigned>& robot_ids) {
+  if (robot_ids.empty()) return {};
+  mysqlpp::Query q = c_.query();
+  q << "SELECT " << kTaskColumns << " FROM tasks WHERE state IN " << kOpenStates << " AND robot_id IN (";
+  for (size_t i = 0; i < robot_ids.size(); ++i) q << (i ? "," : "") << robot_ids[i];
+  q << ") ORDER BY id DESC";
+  std::vector<TaskRow> out;
+  for (const mysqlpp::Row& r : q.store()) {
+    TaskRow t = read_task(r);
+    bool newer_seen = false;  // the newest open task per robot, as open_task()
+    for (const TaskRow& o : out) newer_seen = newer_seen || o.robot_id == t.robot_id;
+    if (!newer_seen) out.push_back(std::move(t));
+  }
+  return out;
 }
 
 std::optional<TaskRow> RobotStore::task_pushed_as(unsigned robot_id, unsigned long long answer_id) {

@@ -40,19 +40,19 @@ class RobotStore {
 
   // Claims robots, not rows (SPEC 5.3): locks the robots rows of these accounts that no
   // other server holds (FOR UPDATE SKIP LOCKED). Accounts without a row are not returned.
-  std::vector<RobotRow> claim(const std::vector<std::string>& accounts, size_t limit);
+  // One statement for the lot: the accounts are a bounded list (the caller's share of
+  // the queue head), so no row is locked that is not returned; returned in the order given.
+  std::vector<RobotRow> claim(const std::vector<std::string>& accounts);
   std::optional<RobotRow> claim(unsigned robot_id);
 
-  // Anything a robot sends refreshes it; a lost robot comes back.
-  void seen(unsigned id, const std::string& at);
   void start_session(unsigned id, long long magic);
   void set_state(unsigned id, const std::string& state);
-  void record_pose(unsigned id, const SendPosParams& p, const std::string& at);
-  void record_gps(unsigned id, const SendGpsParams& p, std::optional<Point> map_xy, const std::string& at);
   void record_image(unsigned id, const SendImageParams& p, const std::string& data, const std::string& at);
   void record_object(unsigned id, std::optional<unsigned> map_id, const SetObjectParams& p, const std::string& at);
 
   std::optional<TaskRow> open_task(unsigned robot_id);  // newest task not done/aborted/failed
+  // The open task of each of these robots that has one, in one query.
+  std::vector<TaskRow> open_tasks(const std::vector<unsigned>& robot_ids);
   std::optional<TaskRow> task_pushed_as(unsigned robot_id, unsigned long long answer_id);
   void set_task_state(unsigned long long task_id, const std::string& state, const std::string& reason = "");
   void set_task_answer(unsigned long long task_id, unsigned long long answer_id);

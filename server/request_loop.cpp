@@ -1,7 +1,9 @@
 #include "server/request_loop.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
+#include <stdexcept>
 #include <thread>
 
 #include <spdlog/spdlog.h>
@@ -16,6 +18,11 @@ namespace {
 
 constexpr unsigned kLockWaitTimeout = 1205;
 constexpr unsigned kDeadlock = 1213;
+
+// A handler failed in a way that only a savepoint can contain.
+struct RedoCarefully : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 bool retryable(const mysqlpp::BadQuery& e) { return e.errnum() == kLockWaitTimeout || e.errnum() == kDeadlock; }
 
@@ -38,7 +45,7 @@ void RequestLoop::connect_with_retry() {
   double wait_s = 0.1;
   while (!stop_) {
     try {
-      conn_ = connect(db_);
+      conn_ = connect(db_, multi_statements_);
       // Wait on a lock only briefly: a robot holding sa locks must not stall everyone (SPEC 5.3).
       execute(*conn_, "SET SESSION innodb_lock_wait_timeout = " + std::to_string(config_.lock_wait_timeout_s));
       spdlog::info("worker {}: connected as {}", worker_, describe(db_));
@@ -85,6 +92,11 @@ void RequestLoop::run() {
       spdlog::warn("worker {}: {}; reconnecting", worker_, e.what());
       conn_.reset();
       continue;
+    } catch (const std::exception& e) {
+      // A bug, not the robots' doing: the transaction is rolled back; keep serving the others.
+      spdlog::error("worker {}: {}", worker_, e.what());
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));
+      continue;
     }
     if (done > 0) {
       idle_ms = 0;
@@ -97,36 +109,95 @@ void RequestLoop::run() {
 }
 
 size_t RequestLoop::serve_batch() {
-  RequestQueue queue(*conn_);
-  RobotStore robots(*conn_);
-  const std::vector<std::string> accounts = queue.waiting_accounts(config_.batch_robots * 4);
-  if (accounts.empty()) return 0;
-
-  Transaction tx(*conn_);
-  std::vector<RobotRow> claimed = robots.claim(accounts, config_.batch_robots);
-  size_t handled = 0;
-  for (RobotRow& robot : claimed) {
-    const std::vector<Request> reqs = queue.requests_of(robot.db_user, config_.batch_requests);
-    if (reqs.empty()) continue;  // another server took them between our read and our lock
-    std::vector<unsigned long long> ids;
-    for (const Request& req : reqs) {
-      if (!robot.removed) handle(robot, req, queue, robots);
-      ids.push_back(req.id);
-    }
-    queue.remove(ids);
-    if (!robot.removed) robots.seen(robot.id, reqs.back().created_at);
-    handled += reqs.size();
+  try {
+    return serve(false);
+  } catch (const mysqlpp::BadQuery& e) {
+    if (retryable(e) || connection_lost(e.errnum())) throw;
+    // A write of the batch failed (the transaction is rolled back): go again at once,
+    // one request at a time in savepoints, so that only the request at fault gets an Error.
+    spdlog::warn("worker {}: batch failed (database error {}: {}); serving it again request by request", worker_,
+                 e.errnum(), e.what());
+  } catch (const RedoCarefully& e) {
+    spdlog::warn("worker {}: batch failed ({}); serving it again request by request", worker_, e.what());
   }
-  tx.commit();
-  return handled;
+  return serve(true);
 }
 
-void RequestLoop::handle(RobotRow& robot, const Request& req, RequestQueue& queue, RobotStore& robots) {
+std::vector<std::string> RequestLoop::my_share(const std::vector<std::string>& waiting, bool mine) const {
+  // Workers of one process take interleaved shares of the queue head, so that they do
+  // not all reach for the same robots; servers of other processes meet only through
+  // SKIP LOCKED.
+  const size_t workers = static_cast<size_t>(std::max(1, config_.workers));
+  std::vector<std::string> out;
+  for (size_t i = 0; i < waiting.size() && out.size() < config_.batch_robots; ++i)
+    if ((i % workers == static_cast<size_t>(worker_) % workers) == mine) out.push_back(waiting[i]);
+  return out;
+}
+
+size_t RequestLoop::serve(bool careful) {
+  RequestQueue queue(*conn_);
+  RobotStore robots(*conn_);
+  const std::vector<std::string> waiting =
+      queue.waiting_accounts(config_.batch_robots * static_cast<size_t>(std::max(1, config_.workers)));
+  if (waiting.empty()) return 0;
+
+  Transaction tx(*conn_);
+  std::vector<RobotRow> claimed = robots.claim(my_share(waiting, true));
+  if (claimed.empty()) claimed = robots.claim(my_share(waiting, false));  // help the others
+  if (claimed.empty()) return 0;
+
+  std::vector<std::string> accounts;
+  std::vector<unsigned> ids;
+  std::map<std::string, RobotSession> sessions;
+  for (RobotRow& r : claimed) {
+    accounts.push_back(r.db_user);
+    ids.push_back(r.id);
+    std::string key = r.db_user;
+    sessions.emplace(std::move(key), RobotSession{std::move(r), std::nullopt});
+  }
+  for (TaskRow& t : robots.open_tasks(ids))
+    for (auto& [user, s] : sessions)
+      if (s.robot.id == t.robot_id) s.open_task = t;
+  const std::vector<Request> reqs =
+      queue.requests_of(accounts, config_.batch_requests, config_.batch_requests * accounts.size());
+
+  WriteBatch batch(*conn_, multi_statements_);
   MapStore maps(*conn_);
-  HandlerContext ctx{config_, robots, maps, cache_, planners_, robot, req, {}, {}};
-  // Each request in a savepoint: a database error in one handler undoes that request's
-  // work only, and the robot gets an Error instead.
-  execute(*conn_, "SAVEPOINT request");
+  MapInfoCache infos;
+  std::map<std::string, std::string> last_seen;
+  for (const Request& req : reqs) {
+    RobotSession& s = sessions.at(req.db_user);
+    if (!s.robot.removed) handle(s, req, robots, maps, infos, batch, careful);
+    batch.remove_request(req.id);
+    last_seen[req.db_user] = req.created_at;  // requests come in id order
+  }
+  for (auto& [user, s] : sessions) {
+    if (s.robot.removed || !last_seen.count(user)) continue;  // another server took its requests
+    if (s.robot.state == "lost") s.robot.state = "ready";   // anything it sends brings it back
+    batch.robot(s.robot, last_seen[user]);
+  }
+  if (config_.commit_delay_ms > 0)
+    std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(config_.commit_delay_ms));
+  batch.flush(/*commit=*/true);
+  tx.committed_by_batch();
+  return reqs.size();
+}
+
+void RequestLoop::handle(RobotSession& session, const Request& req, RobotStore& robots, MapStore& maps,
+                         MapInfoCache& infos, WriteBatch& batch, bool careful) {
+  RobotRow& robot = session.robot;
+  HandlerContext ctx{config_, robots, maps, cache_, planners_, infos, session, robot, req, {}, {}};
+  const RobotSession before = session;  // an Error leaves the robot as it was
+  // Careful: each request in a savepoint with its writes sent at once, so that a
+  // database error in one handler undoes that request's work only.
+  if (careful) execute(*conn_, "SAVEPOINT request");
+  auto refuse = [&](ErrorCode code, const std::string& message) {
+    if (careful) execute(*conn_, "ROLLBACK TO SAVEPOINT request");
+    session = before;
+    ctx.writes.clear();
+    ctx.writes.answers.push_back(
+        {robot.id, robot.db_user, req.id, AnswerOp::Error, encode(ErrorParams{req.id, code, message}), std::nullopt});
+  };
   try {
     const std::optional<RequestOp> op = parse_request_op(req.op);
     if (!op) throw ProtocolError(ErrorCode::UnknownOp, "unknown op '" + req.op.substr(0, 16) + "'");
@@ -137,30 +208,29 @@ void RequestLoop::handle(RobotRow& robot, const Request& req, RequestQueue& queu
       throw ProtocolError(ErrorCode::NotRegistered, "send Ready first");
     ctx.params = parse_params(req.params);
     handler_for(*op)(ctx);
+    batch.add(std::move(ctx.writes));
+    if (careful) batch.flush(/*commit=*/false);
+    return;
   } catch (const ProtocolError& e) {
-    ctx.answers.clear();
-    ctx.answers.push_back({robot.id, robot.db_user, req.id, AnswerOp::Error,
-                           encode(ErrorParams{req.id, e.code(), e.what()}), std::nullopt});
-    execute(*conn_, "ROLLBACK TO SAVEPOINT request");
+    refuse(e.code(), e.what());
     spdlog::debug("worker {}: {} request {} ({}): {} {}", worker_, robot.db_user, req.id, req.op.substr(0, 16),
                   name(e.code()), e.what());
   } catch (const mysqlpp::BadQuery& e) {
-    if (retryable(e) || connection_lost(e.errnum())) throw;  // the whole transaction goes again
-    execute(*conn_, "ROLLBACK TO SAVEPOINT request");
+    // Fast mode: no savepoint to go back to; the batch goes again carefully (serve_batch).
+    if (!careful || retryable(e) || connection_lost(e.errnum())) throw;
     spdlog::error("worker {}: {} request {} ({}): database error {}: {}", worker_, robot.db_user, req.id,
                   req.op.substr(0, 16), e.errnum(), e.what());
-    ctx.answers.clear();
-    ctx.answers.push_back({robot.id, robot.db_user, req.id, AnswerOp::Error,
-                           encode(ErrorParams{req.id, ErrorCode::Internal, "the server could not store this request"}),
-                           std::nullopt});
+    refuse(ErrorCode::Internal, "the server could not store this request");
+  } catch (const mysqlpp::Exception&) {
+    throw;  // the connection is in doubt: reconnect (run)
   } catch (const std::exception& e) {
-    execute(*conn_, "ROLLBACK TO SAVEPOINT request");
+    // Fast mode: its direct writes, if any, cannot be undone alone.
+    if (!careful) throw RedoCarefully(e.what());
     spdlog::error("worker {}: {} request {} ({}): {}", worker_, robot.db_user, req.id, req.op.substr(0, 16), e.what());
-    ctx.answers.clear();
-    ctx.answers.push_back({robot.id, robot.db_user, req.id, AnswerOp::Error,
-                           encode(ErrorParams{req.id, ErrorCode::Internal, e.what()}), std::nullopt});
+    refuse(ErrorCode::Internal, e.what());
   }
-  for (const Answer& a : ctx.answers) queue.insert(a);
+  batch.add(std::move(ctx.writes));
+  if (careful) batch.flush(/*commit=*/false);
 }
 
 size_t RequestLoop::drop_orphan_requests() {

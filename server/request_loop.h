@@ -4,6 +4,10 @@
 // processes share the load and never work on one robot at once), handles each robot's
 // requests in id order, writes the answers, deletes the requests and commits: all in one
 // transaction, so a crash at any point loses no request and answers none twice.
+// A pass costs a fixed handful of round trips, not several per request: one read each of
+// the queue head, the claim, the claimed robots' requests and open tasks, then every
+// write and the COMMIT together (protocol/write_batch.h). A failure that a whole batch
+// cannot contain sends it again request by request in savepoints ("careful" pass).
 // The housekeeping worker also pushes operators' goals and aborts, and marks silent
 // robots lost.
 #include <atomic>
@@ -16,6 +20,8 @@
 #include "protocol/db_settings.h"
 #include "protocol/request_queue.h"
 #include "protocol/robot_store.h"
+#include "protocol/write_batch.h"
+#include "server/handlers/handler.h"
 #include "server/map_cache.h"
 #include "server/planner_cache.h"
 #include "server/server_config.h"
@@ -37,7 +43,10 @@ class RequestLoop {
 
  private:
   void connect_with_retry();
-  void handle(RobotRow& robot, const Request& req, RequestQueue& queue, RobotStore& robots);
+  size_t serve(bool careful);
+  std::vector<std::string> my_share(const std::vector<std::string>& waiting, bool mine) const;
+  void handle(RobotSession& session, const Request& req, RobotStore& robots, MapStore& maps, MapInfoCache& infos,
+              WriteBatch& batch, bool careful);
 
   DbSettings db_;
   const ServerConfig& config_;
@@ -46,6 +55,7 @@ class RequestLoop {
   const std::atomic<bool>& stop_;
   int worker_;
   bool housekeeping_;
+  bool multi_statements_ = true;  // a batch's writes and COMMIT in one round trip
   std::unique_ptr<mysqlpp::Connection> conn_;
   std::chrono::steady_clock::time_point next_housekeeping_{};
 };

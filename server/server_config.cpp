@@ -6,7 +6,7 @@
 namespace fleetmap {
 namespace {
 
-double positive(const std::string& key, const std::string& v) {
+double number(const std::string& key, const std::string& v, bool zero_ok) {
   size_t used = 0;
   double d = 0;
   try {
@@ -14,10 +14,13 @@ double positive(const std::string& key, const std::string& v) {
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used != v.size() || !std::isfinite(d) || d <= 0)
-    throw std::invalid_argument("[server] " + key + ": expected a positive number, got '" + v + "'");
+  if (used != v.size() || !std::isfinite(d) || d < 0 || (d == 0 && !zero_ok))
+    throw std::invalid_argument("[server] " + key + ": expected a " + (zero_ok ? "non-negative" : "positive") +
+                                " number, got '" + v + "'");
   return d;
 }
+
+double positive(const std::string& key, const std::string& v) { return number(key, v, false); }
 
 }  // namespace
 
@@ -35,6 +38,7 @@ void ServerConfig::apply(const std::map<std::string, std::string>& s) {
     else if (k == "max_image_bytes") max_image_bytes = static_cast<size_t>(positive(k, v));
     else if (k == "goal_tolerance_m") goal_tolerance_m = positive(k, v);
     else if (k == "robot_radius_m") robot_radius_m = positive(k, v);
+    else if (k == "commit_delay_ms") commit_delay_ms = number(k, v, true);
     else if (k == "lock_wait_timeout_s") lock_wait_timeout_s = static_cast<int>(positive(k, v));
     else throw std::invalid_argument("[server] unknown setting '" + k + "'");
   }

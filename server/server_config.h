@@ -20,6 +20,7 @@ struct ServerConfig {
   double goal_tolerance_m = 0.5;      // Stopped within this of the goal -> task done
   double robot_radius_m = 0.3;        // GetPath plans for a disc of this radius
   int lock_wait_timeout_s = 1;        // then find and end the robot connection that blocks
+  double commit_delay_ms = 0;         // fault injection for crash tests: a wider window before COMMIT
 
   // Applies "key = value" settings; throws std::invalid_argument naming a bad key or value.
   void apply(const std::map<std::string, std::string>& settings);

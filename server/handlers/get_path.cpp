@@ -7,11 +7,11 @@ namespace fleetmap {
 
 void handle_get_path(HandlerContext& ctx) {
   decode_empty(ctx.params);
-  const std::optional<TaskRow> task = ctx.robots.open_task(ctx.robot.id);
+  const std::optional<TaskRow> task = ctx.open_task();
   if (!task) throw ProtocolError(ErrorCode::NoGoal, "this robot has no open task");
   if (!ctx.robot.x || !ctx.robot.y) throw ProtocolError(ErrorCode::NoPose, "send SendPos first: no pose is known");
   if (!ctx.robot.map_id) throw ProtocolError(ErrorCode::Internal, "no map is assigned to this robot");
-  const std::optional<MapInfo> info = ctx.maps.info(*ctx.robot.map_id);
+  const std::optional<MapInfo> info = ctx.map_info();
   if (!info) throw ProtocolError(ErrorCode::Internal, "the robot's map was deleted; ask an operator");
   const auto planner = ctx.planners.get(ctx.map_cache, ctx.maps, info->id, info->name, ctx.config.robot_radius_m);
   const PlanResult r = planner->plan({*ctx.robot.x, *ctx.robot.y}, {task->goal_x, task->goal_y});
@@ -23,7 +23,7 @@ void handle_get_path(HandlerContext& ctx) {
                                                std::to_string(task->goal_y) + "): " + why);
   }
   ctx.answer(AnswerOp::SetPath, encode(SetPathParams{*r.path, r.length}));
-  if (task->state == "acknowledged" || task->state == "assigned") ctx.robots.set_task_state(task->id, "active");
+  if (task->state == "acknowledged" || task->state == "assigned") ctx.set_task_state(task->id, "active");
 }
 
 }  // namespace fleetmap

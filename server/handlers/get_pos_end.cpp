@@ -5,7 +5,7 @@ namespace fleetmap {
 
 void handle_get_pos_end(HandlerContext& ctx) {
   decode_empty(ctx.params);
-  const std::optional<TaskRow> task = ctx.robots.open_task(ctx.robot.id);
+  const std::optional<TaskRow>& task = ctx.open_task();
   if (!task) throw ProtocolError(ErrorCode::NoGoal, "this robot has no open task");
   ctx.answer(AnswerOp::SetPosEnd, encode(SetPoseParams{task->goal_x, task->goal_y, std::nullopt}));
 }

@@ -5,6 +5,14 @@
 
 namespace fleetmap {
 
+void HandlerContext::set_task_state(unsigned long long task_id, const std::string& state) {
+  robots.set_task_state(task_id, state);
+  if (session.open_task && session.open_task->id == task_id) {
+    if (state == "assigned" || state == "acknowledged" || state == "active") session.open_task->state = state;
+    else session.open_task.reset();  // closed: a robot has one open task at most
+  }
+}
+
 Handler handler_for(RequestOp op) {
   switch (op) {
     case RequestOp::Ready: return handle_ready;
@@ -26,7 +34,7 @@ Handler handler_for(RequestOp op) {
 void answer_map(HandlerContext& ctx, const Rect* window, MapEncoding encoding) {
   if (!ctx.robot.map_id)
     throw ProtocolError(ErrorCode::Internal, "no map is assigned to this robot; ask an operator (fleetmap robot add --map)");
-  const std::optional<MapInfo> info = ctx.maps.info(*ctx.robot.map_id);
+  const std::optional<MapInfo> info = ctx.map_info();
   if (!info) throw ProtocolError(ErrorCode::Internal, "the robot's map was deleted; ask an operator");
   Map m;
   if (window) {

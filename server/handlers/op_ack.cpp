@@ -11,9 +11,9 @@ void handle_op_ack(HandlerContext& ctx) {
     throw ProtocolError(ErrorCode::UnknownAnswer,
                         "answer " + std::to_string(p.answer_id) + " is not one of this robot's pushed operations");
   if (task->abort_answer_id == p.answer_id) {
-    if (task->state != "aborted") ctx.robots.set_task_state(task->id, "aborted");
+    if (task->state != "aborted") ctx.set_task_state(task->id, "aborted");
   } else if (task->state == "assigned") {
-    ctx.robots.set_task_state(task->id, "acknowledged");
+    ctx.set_task_state(task->id, "acknowledged");
   }
 }
 

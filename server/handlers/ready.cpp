@@ -6,12 +6,9 @@ namespace fleetmap {
 
 void handle_ready(HandlerContext& ctx) {
   const ReadyParams p = decode_ready(ctx.params);
-  ctx.robots.start_session(ctx.robot.id, p.magic);
-  ctx.robot.magic = p.magic;
   ctx.answer(AnswerOp::Start, encode(StartParams{p.magic, ctx.robot.id, ctx.config.alive_period_s}));
-
   const MapEncoding e = p.encoding.value_or(MapEncoding::Seed);
-  const std::optional<MapInfo> info = ctx.robot.map_id ? ctx.maps.info(*ctx.robot.map_id) : std::nullopt;
+  const std::optional<MapInfo> info = ctx.map_info();
   if (info && info->segments > ctx.config.max_full_map_segments) {
     // Last reported pose, else the operator's initial pose, else the map's centre.
     const Rect b = info->border.rect();
@@ -23,6 +20,10 @@ void handle_ready(HandlerContext& ctx) {
   } else {
     answer_map(ctx, nullptr, e);
   }
+  // Last, after everything that may refuse the request: no direct write before an Error.
+  ctx.robots.start_session(ctx.robot.id, p.magic);
+  ctx.robot.magic = p.magic;
+  ctx.robot.state = "ready";
 }
 
 }  // namespace fleetmap

@@ -8,10 +8,9 @@ namespace fleetmap {
 void handle_send_gps(HandlerContext& ctx) {
   const SendGpsParams p = decode_send_gps(ctx.params);
   std::optional<Point> xy;
-  if (ctx.robot.map_id)
-    if (auto info = ctx.maps.info(*ctx.robot.map_id); info && info->geo_lat && info->geo_lon)
-      xy = to_map({*info->geo_lat, *info->geo_lon, info->geo_heading.value_or(0)}, p.lat, p.lon);
-  ctx.robots.record_gps(ctx.robot.id, p, xy, ctx.request.created_at);
+  if (const auto info = ctx.map_info(); info && info->geo_lat && info->geo_lon)
+    xy = to_map({*info->geo_lat, *info->geo_lon, info->geo_heading.value_or(0)}, p.lat, p.lon);
+  ctx.writes.fixes.push_back({ctx.robot.id, p, xy, ctx.request.created_at});
   ctx.op_ack();
 }
 

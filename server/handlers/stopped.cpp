@@ -8,10 +8,11 @@ namespace fleetmap {
 
 void handle_stopped(HandlerContext& ctx) {
   decode_empty(ctx.params);
-  ctx.robots.set_state(ctx.robot.id, "stopped");
-  if (auto task = ctx.robots.open_task(ctx.robot.id); task && task->state == "active" && ctx.robot.x && ctx.robot.y) {
+  ctx.robot.state = "stopped";
+  ctx.robot.v = 0;
+  if (const auto& task = ctx.open_task(); task && task->state == "active" && ctx.robot.x && ctx.robot.y) {
     if (std::hypot(*ctx.robot.x - task->goal_x, *ctx.robot.y - task->goal_y) <= ctx.config.goal_tolerance_m)
-      ctx.robots.set_task_state(task->id, "done");
+      ctx.set_task_state(task->id, "done");
   }
   ctx.op_ack();
 }

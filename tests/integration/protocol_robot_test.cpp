@@ -163,6 +163,45 @@ TEST_F(ReferenceRobot, MalformedRequestsGetErrorsAndServingGoesOn) {
   EXPECT_EQ(g[0].op, "SetMap");
 }
 
+// The server writes a batch of requests together (protocol/write_batch.h). When the
+// database refuses one request's write, only that request gets an Error: the others that
+// came in the same batch are answered and stored as if it were not there.
+TEST_F(ReferenceRobot, AWriteTheDatabaseRefusesCostsOnlyItsOwnRequest) {
+  ready();
+  const std::string mine = " WHERE robot_id = " + std::to_string(robot_id_);
+  const long long fixes = scalar("SELECT COUNT(*) FROM gps_fixes" + mine);
+  const long long poses = scalar("SELECT COUNT(*) FROM trajectories" + mine);
+  const long long images = scalar("SELECT COUNT(*) FROM images" + mine);
+  // One robot transaction: the server sees all five at once, in one batch.
+  mysqlpp::Connection& c = robot_->connection();
+  c.query("START TRANSACTION").execute();
+  const auto gps1 = robot_->send("SendGPS", R"({"lat": 41.0, "lon": 2.0})");
+  robot_->send("SendPos", R"({"x": 3, "y": 4, "theta": 0.5, "v": 0})");
+  // images.format is VARCHAR(32): 40 characters are refused by the database (strict mode).
+  const auto bad = robot_->send("SendImage", R"({"x": 1, "y": 2, "format": ")" + std::string(40, 'p') + R"("})",
+                                std::string("\x89PNG"));
+  const auto gps2 = robot_->send("SendGPS", R"({"lat": 41.5, "lon": 2.5})");
+  const auto map = robot_->send("GetMap", R"({"x": 20, "y": 30, "w": 10, "h": 8})");
+  c.query("COMMIT").execute();
+
+  auto a = robot_->receive(4);
+  ASSERT_EQ(a.size(), 4u);
+  EXPECT_EQ(a[0].request_id, gps1);
+  EXPECT_EQ(a[0].op, "OpAck");
+  EXPECT_EQ(a[1].request_id, bad);
+  EXPECT_EQ(a[1].op, "Error");
+  EXPECT_TRUE(a[1].params["code"] == "internal" || a[1].params["code"] == "bad_params") << a[1].params.dump();
+  EXPECT_EQ(a[2].request_id, gps2);
+  EXPECT_EQ(a[2].op, "OpAck");
+  EXPECT_EQ(a[3].request_id, map);
+  EXPECT_EQ(a[3].op, "SetMap");
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM gps_fixes" + mine), fixes + 2);
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM trajectories" + mine), poses + 1);
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM images" + mine), images);
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM robots WHERE x = 3 AND y = 4 AND id = " + std::to_string(robot_id_)), 1);
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM rr WHERE db_user = 'proto_r1'"), 0);
+}
+
 TEST_F(ReferenceRobot, GpsImageAndObjectAreStoredAndAcknowledged) {
   ready();
   const std::string mine = " WHERE robot_id = " + std::to_string(robot_id_);

@@ -485,14 +485,17 @@ TEST(ServerCrash, KilledAgainAndAgainLosesNothingAndAnswersNothingTwice) {
   std::uniform_int_distribution<int> delay_ms(20, 300);
 
   const auto t0 = Clock::now();
-  auto server = std::make_unique<ServerProcess>("--workers 2", "crash_server.log");
+  // A batch commits within a millisecond or two; the delay widens the window a kill must hit
+  // to interrupt a transaction in flight (what this test is about), nothing else changes.
+  const std::string flags = "--workers 2 --commit-delay-ms 5";
+  auto server = std::make_unique<ServerProcess>(flags, "crash_server.log");
   TrafficGenerator traffic(bots, milliseconds(4));
   long long max_backlog = 0;
   for (int k = 0; k < kKills; ++k) {
     std::this_thread::sleep_for(milliseconds(delay_ms(rng)));
     server->kill9();
     max_backlog = std::max(max_backlog, waiting_requests(bots));
-    server = std::make_unique<ServerProcess>("--workers 2", "crash_server.log");
+    server = std::make_unique<ServerProcess>(flags, "crash_server.log");
   }
   // A little more traffic with a live server, then the robots stop and the server drains rr.
   std::this_thread::sleep_for(milliseconds(300));
