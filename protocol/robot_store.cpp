@@ -7,7 +7,8 @@ namespace fleetmap {
 namespace {
 
 constexpr const char* kRobotColumns =
-    "id, db_user, map_id, state, magic, x, y, theta, v, ini_x, ini_y, ini_theta, removed_at IS NOT NULL";
+    "id, db_user, map_id, state, magic, x, y, theta, v, ini_x, ini_y, ini_theta, removed_at IS NOT NULL, laser_height, radius, "
+    "body_height, can_stairs, can_ramps";
 constexpr const char* kTaskColumns =
     "id, robot_id, goal_x, goal_y, state, answer_id, abort_answer_id, abort_requested_at IS NOT NULL, reason";
 constexpr const char* kOpenStates = "('assigned', 'acknowledged', 'active')";
@@ -46,6 +47,11 @@ RobotRow RobotStore::read_robot(const mysqlpp::Row& r) {
   b.ini_y = sql::opt_double(r[10]);
   b.ini_theta = sql::opt_double(r[11]);
   b.removed = sql::to_int(r[12]) != 0;
+  b.laser_height = sql::opt_double(r[13]);
+  b.radius = sql::opt_double(r[14]);
+  b.body_height = sql::opt_double(r[15]);
+  b.can_stairs = sql::to_int(r[16]) != 0;
+  b.can_ramps = sql::to_int(r[17]) != 0;
   return b;
 }
 

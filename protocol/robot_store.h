@@ -21,6 +21,9 @@ struct RobotRow {
   std::optional<double> x, y, theta, v;
   std::optional<double> ini_x, ini_y, ini_theta;
   bool removed = false;
+  // Profile (issue 8); nullopt: the server's default.
+  std::optional<double> laser_height, radius, body_height;
+  bool can_stairs = false, can_ramps = true;
   bool registered() const { return magic.has_value() && !removed; }
 };
 

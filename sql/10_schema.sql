@@ -79,9 +79,19 @@ CREATE TABLE IF NOT EXISTS robots (
   last_seen   TIMESTAMP(6) NULL,
   created_at  TIMESTAMP(6) NOT NULL DEFAULT CURRENT_TIMESTAMP(6),
   removed_at  TIMESTAMP(6) NULL,
+  -- profile (issue 8, seed 004): what the robot's map and plans depend on; NULL: the
+  -- server's defaults (laser_height_m, robot_radius_m, body_height_m in [server])
+  laser_height DOUBLE NULL,                   -- m over the floor, of the laser its maps are sliced for
+  radius      DOUBLE NULL,                    -- m, kept from every obstacle when planning
+  body_height DOUBLE NULL,                    -- m: elements starting below this block it
+  can_stairs  BOOLEAN NOT NULL DEFAULT FALSE,
+  can_ramps   BOOLEAN NOT NULL DEFAULT TRUE,
   UNIQUE KEY uq_robots_db_user (db_user),
   CONSTRAINT fk_robots_map FOREIGN KEY (map_id) REFERENCES maps (id) ON DELETE SET NULL,
-  CONSTRAINT ck_robots_name CHECK (db_user REGEXP '^[a-z0-9_-]{1,32}$')
+  CONSTRAINT ck_robots_name CHECK (db_user REGEXP '^[a-z0-9_-]{1,32}$'),
+  CONSTRAINT ck_robots_profile CHECK ((laser_height IS NULL OR laser_height BETWEEN 0 AND 1000)
+                                      AND (radius IS NULL OR radius BETWEEN 0 AND 100)
+                                      AND (body_height IS NULL OR body_height BETWEEN 0 AND 1000))
 ) ENGINE=InnoDB;
 
 CREATE TABLE IF NOT EXISTS tasks (
