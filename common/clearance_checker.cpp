@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "common/segment_distance.h"
 
@@ -35,8 +36,10 @@ double rect_segment_distance2(const Rect& r, Point a, Point b) {
 }  // namespace
 
 ClearanceChecker::ClearanceChecker(const Map& map, const ClearanceOptions& options)
-    : radius_(options.radius), r2_(options.radius * options.radius),
-      obstacles_(prepare_planning_obstacles(map, options.robot)) {
+    : ClearanceChecker(map, prepare_planning_obstacles(map, options.robot), options) {}
+
+ClearanceChecker::ClearanceChecker(const Map& map, PlanningObstacles obstacles, const ClearanceOptions& options)
+    : radius_(options.radius), r2_(options.radius * options.radius), obstacles_(std::move(obstacles)) {
   if (!(std::isfinite(radius_) && radius_ >= 0))
     throw std::invalid_argument("expected a finite robot radius >= 0, got " + std::to_string(radius_));
   if (!(std::isfinite(options.cell) && options.cell >= 0))

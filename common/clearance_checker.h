@@ -41,6 +41,9 @@ class ClearanceChecker {
  public:
   // Throws std::invalid_argument for a negative or non-finite radius or cell.
   ClearanceChecker(const Map& map, const ClearanceOptions& options);
+  // With obstacles prepared elsewhere (common/planning_scene.h adds a scene's); the map
+  // gives the border only, and options.robot is not used.
+  ClearanceChecker(const Map& map, PlanningObstacles obstacles, const ClearanceOptions& options);
 
   double radius() const { return radius_; }
   // Where the disc's centre may be: the border shrunk by r (empty when r is too large).
@@ -55,6 +58,7 @@ class ClearanceChecker {
   size_t blocking_segments() const { return obstacles_.segments.size(); }
   size_t cell_entries() const { return entries_.size(); }
   size_t memory_bytes() const;
+  const PlanningObstacles& obstacles() const { return obstacles_; }
 
  private:
   struct Entry {  // one blocking segment listed in one cell

@@ -3,11 +3,15 @@
 #include <chrono>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace fleetmap {
 
 MapPlanner::MapPlanner(const Map& map, const PlannerOptions& options)
-    : opt_(options), checker_(map, ClearanceOptions{options.radius, options.robot, 0}) {
+    : MapPlanner(map, prepare_planning_obstacles(map, options.robot), options) {}
+
+MapPlanner::MapPlanner(const Map& map, PlanningObstacles obstacles, const PlannerOptions& options)
+    : opt_(options), checker_(map, std::move(obstacles), ClearanceOptions{options.radius, options.robot, 0}) {
   opt_.rrt.seed = opt_.seed;
   if (opt_.attempts < 1) throw std::invalid_argument("expected at least 1 planning attempt, got " + std::to_string(opt_.attempts));
   RrtConnect check(checker_, opt_.rrt);  // validates the RRT options now, not at the first plan

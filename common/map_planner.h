@@ -5,6 +5,7 @@
 // several threads at once.
 //
 //   MapPlanner planner(map, {.radius = 0.3, .seed = 7});
+//   MapPlanner with_objects(map, planning_obstacles(map, scene, body_height, {}), options);
 //   PlanResult r = planner.plan({1, 2}, {40, 18});
 //   if (r.path) use(*r.path, r.length);
 #include <optional>
@@ -54,6 +55,9 @@ class MapPlanner {
  public:
   // Throws std::invalid_argument for options out of range.
   MapPlanner(const Map& map, const PlannerOptions& options);
+  // With obstacles prepared elsewhere, e.g. a scene's objects and avoided areas
+  // (common/planning_scene.h); the map gives the border.
+  MapPlanner(const Map& map, PlanningObstacles obstacles, const PlannerOptions& options);
 
   PlanResult plan(Point start, Point goal) const;
   const ClearanceChecker& checker() const { return checker_; }

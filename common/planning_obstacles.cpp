@@ -2,15 +2,22 @@
 
 #include <algorithm>
 
+#include "common/polygon.h"
+
 namespace fleetmap {
 
-bool BlockedArea::contains(Point p) const {
-  if (!bounds.contains(p)) return false;
-  for (size_t i = 0; i < ring.size(); ++i) {
-    const Point a = ring[i], b = ring[(i + 1) % ring.size()];
-    if (cross(b - a, p - a) < 0) return false;  // right of a counter-clockwise edge: outside
+bool BlockedArea::contains(Point p) const { return bounds.contains(p) && point_in_polygon(p, ring); }
+
+void add_blocked_area(PlanningObstacles& out, std::vector<Point> ring, int obstacle_id) {
+  BlockedArea area{std::move(ring), {}, obstacle_id};
+  area.bounds = {area.ring[0].x, area.ring[0].y, area.ring[0].x, area.ring[0].y};
+  for (size_t i = 0; i < area.ring.size(); ++i) {
+    const Point p = area.ring[i];
+    area.bounds = {std::min(area.bounds.xmin, p.x), std::min(area.bounds.ymin, p.y), std::max(area.bounds.xmax, p.x),
+                   std::max(area.bounds.ymax, p.y)};
+    out.segments.push_back({p, area.ring[(i + 1) % area.ring.size()], obstacle_id});
   }
-  return true;
+  out.areas.push_back(std::move(area));
 }
 
 std::vector<Point> convex_hull(std::vector<Point> pts) {
@@ -47,16 +54,8 @@ PlanningObstacles prepare_planning_obstacles(const Map& map, const RobotKind& ro
           // one step) still blocks where the steps are.
           if (s.h > 0) out.segments.push_back({s.a, s.b, o.id});
         }
-        const std::vector<Point> hull = convex_hull(corners);
-        if (hull.size() < 3) break;
-        BlockedArea area{hull, {hull[0].x, hull[0].y, hull[0].x, hull[0].y}, o.id};
-        for (size_t i = 0; i < hull.size(); ++i) {
-          const Point p = hull[i];
-          area.bounds = {std::min(area.bounds.xmin, p.x), std::min(area.bounds.ymin, p.y),
-                         std::max(area.bounds.xmax, p.x), std::max(area.bounds.ymax, p.y)};
-          out.segments.push_back({p, hull[(i + 1) % hull.size()], o.id});
-        }
-        out.areas.push_back(std::move(area));
+        std::vector<Point> hull = convex_hull(corners);
+        if (hull.size() >= 3) add_blocked_area(out, std::move(hull), o.id);
         break;
       }
       default:  // ST 1-4

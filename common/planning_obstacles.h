@@ -10,7 +10,10 @@
 //           included as part of that outline. A robot that can climb stairs ignores them.
 //   ST 6    ramps never block ("ramps will be treated as free space", §4.2).
 //
-// The border is handled by ClearanceChecker: a robot must stay inside it.
+// The border is handled by ClearanceChecker: a robot must stay inside it. Objects and
+// avoided areas of the semantic layer are added by common/planning_scene.h.
+#include <map>
+#include <string>
 #include <vector>
 
 #include "common/geometry.h"
@@ -23,18 +26,25 @@ struct BlockingSegment {
   int obstacle_id = 0;  // the map obstacle it comes from (for messages)
 };
 
-// A convex area a robot may not enter (a staircase's hull), counter-clockwise.
+// An area a robot may not enter: a staircase's hull (convex, counter-clockwise), or an
+// object's footprint or an avoided area (a simple ring, either orientation).
 struct BlockedArea {
   std::vector<Point> ring;  // >= 3 vertices, not repeated at the end
   Rect bounds;
   int obstacle_id = 0;
-  bool contains(Point p) const;  // inside or on the outline
+  bool contains(Point p) const;  // inside or on the outline (exact, common/polygon.h)
 };
 
 struct PlanningObstacles {
   std::vector<BlockingSegment> segments;  // every segment a robot's disc may not touch
   std::vector<BlockedArea> areas;         // whose outlines are also in segments
+  // What the ids that are not map obstacles stand for ("object:<tag>:<id>",
+  // "avoid:<id>"), for messages.
+  std::map<int, std::string> names;
 };
+
+// The ring as a BlockedArea with its bounds, and its outline appended to out.segments.
+void add_blocked_area(PlanningObstacles& out, std::vector<Point> ring, int obstacle_id);
 
 struct RobotKind {
   bool can_climb_stairs = false;  // false: a wheeled robot
