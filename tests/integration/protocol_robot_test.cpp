@@ -202,6 +202,34 @@ TEST_F(ReferenceRobot, AWriteTheDatabaseRefusesCostsOnlyItsOwnRequest) {
   EXPECT_EQ(scalar("SELECT COUNT(*) FROM rr WHERE db_user = 'proto_r1'"), 0);
 }
 
+// Requests that arrive together are handled in one batch, the robot's row changed in
+// memory and written once: the result must be that of handling them one after another.
+TEST_F(ReferenceRobot, RequestsOfOneBatchTakeEffectInOrder) {
+  ready();
+  const std::string me = " WHERE id = " + std::to_string(robot_id_);
+  const std::string points = "SELECT COUNT(*) FROM trajectories WHERE robot_id = " + std::to_string(robot_id_);
+  const long long before = scalar(points);
+  mysqlpp::Connection& c = robot_->connection();
+  auto together = [&](const std::vector<std::pair<std::string, std::string>>& reqs) {
+    c.query("START TRANSACTION").execute();
+    for (const auto& [op, params] : reqs) robot_->send(op, params);
+    c.query("COMMIT").execute();
+    ASSERT_TRUE(wait_until([&] { return scalar("SELECT COUNT(*) FROM rr WHERE db_user = 'proto_r1'") == 0; },
+                           std::chrono::seconds(10)));
+    robot_->receive(1, std::chrono::milliseconds(300));  // the Stopped OpAck, if any
+  };
+  together({{"SendPos", R"({"x": 5, "y": 6, "theta": 0, "v": 1})"}, {"Stopped", "{}"}});
+  EXPECT_EQ(scalar("SELECT state = 'stopped' FROM robots" + me), 1);
+  together({{"Stopped", "{}"}, {"SendPos", R"({"x": 7, "y": 8, "theta": 1, "v": 0.5})"}});
+  EXPECT_EQ(scalar("SELECT state = 'moving' AND x = 7 AND y = 8 AND theta = 1 FROM robots" + me), 1);
+  together({{"SendPos", R"({"x": 9, "y": 10, "theta": 2, "v": 1})"}, {"SendPos", R"({"x": 11, "y": 12, "theta": 3, "v": 0})"}});
+  EXPECT_EQ(scalar("SELECT state = 'ready' AND x = 11 AND y = 12 AND v = 0 FROM robots" + me), 1);
+  EXPECT_EQ(scalar(points), before + 4);
+  // last_seen is the newest request's time, never older than it was.
+  EXPECT_EQ(scalar("SELECT last_seen >= (SELECT MAX(t) FROM trajectories WHERE robot_id = " +
+                   std::to_string(robot_id_) + ") FROM robots" + me), 1);
+}
+
 TEST_F(ReferenceRobot, GpsImageAndObjectAreStoredAndAcknowledged) {
   ready();
   const std::string mine = " WHERE robot_id = " + std::to_string(robot_id_);

@@ -93,16 +93,6 @@ bool can_login(const std::string& name, const std::string& password) {
   }
 }
 
-template <typename P>
-bool wait_until(P pred, std::chrono::milliseconds timeout = 10s) {
-  const auto until = std::chrono::steady_clock::now() + timeout;
-  while (std::chrono::steady_clock::now() < until) {
-    if (pred()) return true;
-    std::this_thread::sleep_for(20ms);
-  }
-  return pred();
-}
-
 // A snapshot of what a robot must never be able to change.
 struct Snapshot {
   long long tables, views, triggers, routines, maps, segments, robots, users, robot_grants;

@@ -39,16 +39,6 @@ constexpr const char* kMap = "conc_map";
 
 double elapsed_s(Clock::time_point since) { return std::chrono::duration<double>(Clock::now() - since).count(); }
 
-template <class Pred>
-bool wait_until(Pred pred, milliseconds timeout, milliseconds step = milliseconds(20)) {
-  const auto until = Clock::now() + timeout;
-  while (!pred()) {
-    if (Clock::now() >= until) return false;
-    std::this_thread::sleep_for(step);
-  }
-  return true;
-}
-
 // A fleetmap-server child that keeps its exit status (ServerProcess drops it) and never
 // outlives the test: the destructor SIGKILLs what is still running.
 class Daemon {

@@ -2,8 +2,10 @@
 // Shared by the integration tests: the private MariaDB started by the CTest fixture
 // (scripts/db.sh start with FLEETMAP_HOME/FLEETMAP_PORT from tests/CMakeLists.txt),
 // its accounts, and running the real programs.
+#include <chrono>
 #include <memory>
 #include <string>
+#include <thread>
 
 #include <mysql++/mysql++.h>
 
@@ -24,6 +26,18 @@ std::unique_ptr<mysqlpp::Connection> admin();
 
 // One number from a query run as administrator.
 long long scalar(const std::string& sql);
+
+// Polls pred until it holds (true) or the timeout passes (false).
+template <class Pred>
+bool wait_until(Pred pred, std::chrono::milliseconds timeout = std::chrono::seconds(10),
+                std::chrono::milliseconds step = std::chrono::milliseconds(20)) {
+  const auto until = std::chrono::steady_clock::now() + timeout;
+  while (!pred()) {
+    if (std::chrono::steady_clock::now() >= until) return false;
+    std::this_thread::sleep_for(step);
+  }
+  return true;
+}
 
 struct RunResult {
   int exit_code = -1;
