@@ -10,6 +10,7 @@
 #include "server/cli_context.h"
 #include "server/exit_codes.h"
 #include "server/map_commands.h"
+#include "server/nav2_command.h"
 #include "server/object_commands.h"
 #include "server/plan_command.h"
 #include "server/robot_commands.h"
@@ -28,6 +29,7 @@ int main(int argc, char** argv) {
   int code = exit_code::kOk;
   add_map_commands(app, ctx, &code);
   add_slice_command(app, ctx, &code);
+  add_nav2_command(app, ctx, &code);
   add_plan_command(app, ctx, &code);
   add_robot_commands(app, ctx, &code);
   add_scan_command(app, ctx, &code);

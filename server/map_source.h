@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/map.h"
+#include "common/scene.h"
 #include "server/cli_context.h"
 
 namespace fleetmap {
@@ -14,6 +15,28 @@ bool is_amrl_file(const std::string& file);
 // file empty: the stored map `name`; otherwise the file. Throws MapNotFound,
 // MapFormatError.
 Map load_map_source(const std::string& name, const std::string& file, CliContext& ctx);
+
+// Where the objects of a command's map come from (issue 8): a stored map's scene
+// (SceneStore::load), or with --file an optional --objects F.geojson; --no-objects: none.
+struct ObjectSource {
+  std::string objects_file;  // --objects (only with --file)
+  bool no_objects = false;   // --no-objects: the bare segments
+};
+
+// Adds --objects F.geojson and --no-objects to cmd.
+void add_object_source_options(CLI::App& cmd, ObjectSource& source);
+
+// The scene to add to the map (empty with --no-objects, or a file without --objects).
+// Throws std::invalid_argument for --objects with a stored map or with --no-objects,
+// SceneFormatError (a malformed file, named), MapNotFound.
+Scene load_scene_source(const std::string& name, const std::string& file, const ObjectSource& source,
+                        CliContext& ctx);
+
+// The map as a laser at laser_height sees it: load_map_source plus the scene's elements
+// seen at that height (common/scene_laser.h). *objects (if given) gets how many
+// obstacles the objects added.
+Map load_map_at_height(const std::string& name, const std::string& file, const ObjectSource& source,
+                       double laser_height, CliContext& ctx, size_t* objects = nullptr);
 
 // text to file, or to standard output when file is empty or "-"; throws on a write error.
 void write_output(const std::string& text, const std::string& file);

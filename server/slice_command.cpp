@@ -31,12 +31,13 @@ void add_slice_command(CLI::App& app, CliContext& ctx, int* exit_code) {
   struct Args {
     std::string name, file, out, format = "seed";
     double height = 0, resolution = 0.05;
+    ObjectSource objects;
   };
   auto a = std::make_shared<Args>();
   auto* cmd = app.get_subcommand("map")->add_subcommand(
       "slice",
-      "the map a robot with its laser at --height sees (seed 004): what stops the laser at that height, as a segment "
-      "map (seed format) or a Nav2 occupancy grid (--format pgm: OUTPUT.pgm + OUTPUT.yaml for map_server)");
+      "the map a robot with its laser at --height sees (seed 004): what stops the laser at that height, the map's "
+      "objects included (issue 8), as a segment map (seed format) or a Nav2 occupancy grid (--format pgm: OUTPUT.pgm + OUTPUT.yaml for map_server)");
   cmd->add_option("NAME", a->name, "stored map name (or --file)");
   cmd->add_option("--file", a->file, "a map file instead of a stored map (seed format; AMRL if *.vectormap.txt)");
   cmd->add_option("--height", a->height, "laser mounting height hL (m)")->required()->check(CLI::Range(0.0, 1000.0));
@@ -49,15 +50,20 @@ void add_slice_command(CLI::App& app, CliContext& ctx, int* exit_code) {
   cmd->add_option("--resolution", a->resolution, "pgm: metres per cell")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  add_object_source_options(*cmd, a->objects);
   cmd->callback([a, &ctx, exit_code] {
     if (a->name.empty() == a->file.empty())
       throw std::invalid_argument("expected a stored map NAME or --file F (one of them)");
     if (a->format == "pgm" && a->out.empty()) throw std::invalid_argument("expected -o OUTPUT with --format pgm");
-    const Map map = load_map_source(a->name, a->file, ctx);
+    // The objects seen at hL join the map as closed polygons as high as their element's
+    // top (>= hL), so the slice keeps every one of them (common/scene_laser.h).
+    size_t objects = 0;
+    const Map map = load_map_at_height(a->name, a->file, a->objects, a->height, ctx, &objects);
     const Map slice = slice_at_height(map, a->height);
     const std::string what = a->file.empty() ? "'" + a->name + "'" : a->file;
-    std::fprintf(stderr, "slice of %s at %g m: %zu of %zu obstacles, %zu of %zu segments\n", what.c_str(), a->height,
-                 slice.obstacles.size(), map.obstacles.size(), slice.segment_count(), map.segment_count());
+    std::fprintf(stderr, "slice of %s at %g m: %zu of %zu obstacles (%zu of them object elements), %zu of %zu segments\n",
+                 what.c_str(), a->height, slice.obstacles.size(), map.obstacles.size(), objects,
+                 slice.segment_count(), map.segment_count());
     if (a->format == "seed") {
       write_output(write_seed(slice), a->out);
     } else {
