@@ -1,5 +1,6 @@
 #include "protocol/fleet_store.h"
 
+#include <cmath>
 #include <map>
 
 #include "common/number_format.h"
@@ -7,6 +8,69 @@
 #include "protocol/sql_util.h"
 
 namespace fleetmap {
+
+namespace {
+
+constexpr const char* kProfileColumns = "laser_height, radius, body_height, can_stairs, can_ramps";
+
+RobotProfile read_profile(const mysqlpp::Row& r, size_t at) {
+  RobotProfile p;
+  p.laser_height = sql::opt_double(r[at]);
+  p.radius = sql::opt_double(r[at + 1]);
+  p.body_height = sql::opt_double(r[at + 2]);
+  p.can_stairs = sql::to_int(r[at + 3]) != 0;
+  p.can_ramps = sql::to_int(r[at + 4]) != 0;
+  return p;
+}
+
+void check_range(const char* field, const std::optional<std::optional<double>>& v, double lo, bool lo_ok, double hi) {
+  if (!v || !*v) return;
+  const double d = **v;
+  if (!std::isfinite(d) || d > hi || d < lo || (d == lo && !lo_ok))
+    throw std::invalid_argument(std::string(field) + ": expected a number in " + (lo_ok ? "[" : "(") +
+                                format_number(lo) + ", " + format_number(hi) + "] m, got " + format_number(d));
+}
+
+}  // namespace
+
+void check_profile(const RobotProfileChange& c) {
+  // The ranges of robots' ck_robots_profile (sql/10_schema.sql), without the zero radius
+  // and body height that describe no robot.
+  check_range("laser_height", c.laser_height, 0, true, 1000);
+  check_range("radius", c.radius, 0, false, 100);
+  check_range("body_height", c.body_height, 0, false, 1000);
+}
+
+void FleetStore::set_profile(const std::string& name, const RobotProfileChange& c) {
+  check_profile(c);
+  const unsigned id = robot_id(name);
+  if (c.empty()) return;
+  std::string set;
+  auto add = [&](const char* column, const std::string& value) { set += (set.empty() ? "" : ", ") + std::string(column) + " = " + value; };
+  auto num = [](const std::optional<double>& v) { return v ? format_number(*v) : std::string("NULL"); };
+  if (c.laser_height) add("laser_height", num(*c.laser_height));
+  if (c.radius) add("radius", num(*c.radius));
+  if (c.body_height) add("body_height", num(*c.body_height));
+  if (c.can_stairs) add("can_stairs", *c.can_stairs ? "TRUE" : "FALSE");
+  if (c.can_ramps) add("can_ramps", *c.can_ramps ? "TRUE" : "FALSE");
+  execute(c_, "UPDATE robots SET " + set + " WHERE id = " + std::to_string(id));
+}
+
+RobotProfile FleetStore::profile(const std::string& name) {
+  mysqlpp::Query q = c_.query();
+  q << "SELECT " << kProfileColumns << " FROM robots WHERE db_user = " << mysqlpp::quote << name
+    << " AND removed_at IS NULL";
+  mysqlpp::StoreQueryResult r = q.store();
+  if (r.empty()) throw RobotNotFound(name);
+  return read_profile(r[0], 0);
+}
+
+std::map<std::string, RobotProfile> FleetStore::profiles() {
+  mysqlpp::Query q = c_.query(std::string("SELECT db_user, ") + kProfileColumns + " FROM robots WHERE removed_at IS NULL");
+  std::map<std::string, RobotProfile> out;
+  for (const mysqlpp::Row& r : q.store()) out.emplace(sql::to_string(r[0]), read_profile(r, 1));
+  return out;
+}
 
 unsigned FleetStore::add_robot(const std::string& name, const std::string& password, const std::string& map,
                                int max_connections) {

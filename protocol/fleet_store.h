@@ -2,6 +2,7 @@
 // The operator's side of robots and tasks (SPEC 4, 5.3): registering robot accounts
 // (through the robot_add / robot_remove procedures, sql/40_robot_accounts.sql), goals,
 // initial poses, aborts, and what the status views show.
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -24,6 +25,30 @@ struct RobotStatus {
   std::optional<double> goal_x, goal_y;
 };
 
+// A robot's profile (issue 8, seed 004; columns of robots): what its maps and plans
+// depend on. nullopt: the server's default (laser_height_m, robot_radius_m,
+// body_height_m in [server]); without a laser height the server sends the stored map
+// unsliced (server/robot_map_source.h).
+struct RobotProfile {
+  std::optional<double> laser_height;  // m over the floor, [0, 1000]
+  std::optional<double> radius;        // m, (0, 100]
+  std::optional<double> body_height;   // m, (0, 1000]
+  bool can_stairs = false, can_ramps = true;
+  friend bool operator==(const RobotProfile&, const RobotProfile&) = default;
+};
+
+// What `robot add` / `robot set` change: an absent field stays as it is; a field given
+// as nullopt goes back to the server's default.
+struct RobotProfileChange {
+  std::optional<std::optional<double>> laser_height, radius, body_height;
+  std::optional<bool> can_stairs, can_ramps;
+  bool empty() const { return !laser_height && !radius && !body_height && !can_stairs && !can_ramps; }
+};
+
+// Throws std::invalid_argument naming the field ("laser_height: expected ...") for a value
+// out of its range or not finite.
+void check_profile(const RobotProfileChange& change);
+
 struct TaskInfo {
   unsigned long long id = 0;
   std::string robot, state, reason, created_at, updated_at;
@@ -42,6 +67,10 @@ class FleetStore {
   // Creates the account and the robots row; returns the robot id. Throws
   // std::invalid_argument with the database's reason (bad name, short password, no map, exists).
   unsigned add_robot(const std::string& name, const std::string& password, const std::string& map, int max_connections);
+  // Changes a robot's profile (check_profile first); throws RobotNotFound.
+  void set_profile(const std::string& name, const RobotProfileChange& change);
+  RobotProfile profile(const std::string& name);  // throws RobotNotFound
+  std::map<std::string, RobotProfile> profiles();  // every robot not removed, by name
   void remove_robot(const std::string& name);
   std::vector<RobotStatus> status();
   unsigned robot_id(const std::string& name);  // throws RobotNotFound

@@ -48,6 +48,8 @@ enum class WindowAccess { SpatialIndex, FullScan };
 class MapStore {
  public:
   explicit MapStore(mysqlpp::Connection& c) : c_(c) {}
+  // The connection (and transaction) this store works in, for other tables' classes.
+  mysqlpp::Connection& connection() const { return c_; }
 
   // Stores m (validated by the caller) under name in one transaction: either the whole
   // map is there afterwards or nothing changed. Throws MapExists unless replace.

@@ -63,6 +63,15 @@ std::optional<MapEncoding> optional_encoding(const Json& j) {
   return e;
 }
 
+std::optional<MapMode> optional_mode(const Json& j) {
+  const Json* v = find(j, "mode");
+  if (!v || v->is_null()) return std::nullopt;
+  if (!v->is_string()) bad("mode", "\"2d\" or \"2.5d\", got " + std::string(v->type_name()));
+  auto m = parse_map_mode(v->get<std::string>());
+  if (!m) bad("mode", "\"2d\" or \"2.5d\", got \"" + v->get<std::string>() + "\"");
+  return m;
+}
+
 void require_object(const Json& j) {
   if (!j.is_object()) throw ProtocolError(ErrorCode::BadJson, "params: expected a JSON object");
 }
@@ -74,6 +83,14 @@ std::string_view name(MapEncoding e) { return e == MapEncoding::Seed ? "seed" : 
 std::optional<MapEncoding> parse_map_encoding(std::string_view s) {
   if (s == "seed") return MapEncoding::Seed;
   if (s == "seed+compress") return MapEncoding::SeedCompress;
+  return std::nullopt;
+}
+
+std::string_view name(MapMode m) { return m == MapMode::TwoD ? "2d" : "2.5d"; }
+
+std::optional<MapMode> parse_map_mode(std::string_view s) {
+  if (s == "2d") return MapMode::TwoD;
+  if (s == "2.5d") return MapMode::TwoAndHalfD;
   return std::nullopt;
 }
 
@@ -127,7 +144,7 @@ SendImageParams decode_send_image(const Json& j) {
 
 GetMapParams decode_get_map(const Json& j) {
   require_object(j);
-  GetMapParams p{number(j, "x"), number(j, "y"), number(j, "w"), number(j, "h"), optional_encoding(j)};
+  GetMapParams p{number(j, "x"), number(j, "y"), number(j, "w"), number(j, "h"), optional_encoding(j), optional_mode(j)};
   if (!(p.w > 0)) bad("w", "a width > 0");
   if (!(p.h > 0)) bad("h", "a height > 0");
   return p;
@@ -145,10 +162,13 @@ Json encode(const StartParams& p) {
 }
 
 Json encode(const SetMapParams& p) {
-  return {{"border", {p.border[0], p.border[1], p.border[2], p.border[3]}},
+  Json j = {{"border", {p.border[0], p.border[1], p.border[2], p.border[3]}},
           {"obstacles", p.obstacles},
           {"segments", p.segments},
           {"encoding", std::string(name(p.encoding))}};
+  if (p.laser_height) j["laser_height"] = *p.laser_height;
+  if (p.mode) j["mode"] = std::string(name(*p.mode));
+  return j;
 }
 
 Json encode(const SetPathParams& p) {
@@ -194,6 +214,8 @@ SetMapParams decode_set_map(const Json& j) {
   p.obstacles = static_cast<size_t>(obstacles);
   p.segments = static_cast<size_t>(segments);
   p.encoding = optional_encoding(j).value_or(MapEncoding::Seed);
+  p.laser_height = optional_number(j, "laser_height", 1000);
+  p.mode = optional_mode(j);
   return p;
 }
 

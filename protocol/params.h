@@ -32,13 +32,27 @@ enum class MapEncoding { Seed, SeedCompress };
 std::string_view name(MapEncoding e);
 std::optional<MapEncoding> parse_map_encoding(std::string_view s);
 
+// What GetMap's SetMap holds (issue 8, seed 002 section 3.4, docs/wire-format.md):
+//   TwoD         "2d" (the default): the map the robot's laser sees, i.e. the segment map
+//                sliced at its profile's laser height plus the objects seen there.
+//   TwoAndHalfD  "2.5d": the segments unsliced, with their heights, plus the objects
+//                with their height ranges (params "scene", GeoJSON), for robots that
+//                slice for themselves.
+enum class MapMode { TwoD, TwoAndHalfD };
+std::string_view name(MapMode m);
+std::optional<MapMode> parse_map_mode(std::string_view s);
+
 // Robot -> server.
 struct ReadyParams { long long magic = 0; std::optional<MapEncoding> encoding; };
 struct OpAckParams { unsigned long long answer_id = 0; };
 struct SendPosParams { double x = 0, y = 0, theta = 0, v = 0; std::optional<double> w; };
 struct SendGpsParams { double lat = 0, lon = 0; };
 struct SendImageParams { double x = 0, y = 0; std::optional<long long> object_id; std::string format; };
-struct GetMapParams { double x = 0, y = 0, w = 0, h = 0; std::optional<MapEncoding> encoding; };
+struct GetMapParams {
+  double x = 0, y = 0, w = 0, h = 0;
+  std::optional<MapEncoding> encoding;
+  std::optional<MapMode> mode;  // nullopt: "2d"
+};
 struct SetObjectParams { double x = 0, y = 0; std::string object; };
 
 // The params column as a JSON object; throws ProtocolError(bad_json).
@@ -55,7 +69,15 @@ void decode_empty(const Json& j);  // Alive, Stopped, GetPath, GetPosIni, GetPos
 
 // Server -> robot.
 struct StartParams { long long magic = 0; unsigned robot_id = 0; double alive_period_s = 0; };
-struct SetMapParams { double border[4] = {0, 0, 0, 0}; size_t obstacles = 0, segments = 0; MapEncoding encoding = MapEncoding::Seed; };
+struct SetMapParams {
+  double border[4] = {0, 0, 0, 0};
+  size_t obstacles = 0, segments = 0;
+  MapEncoding encoding = MapEncoding::Seed;
+  // Written only when set, so that a robot without a profile gets the answer it got
+  // before issue 8: the laser height the map is sliced at, and "2.5d" (GetMap mode).
+  std::optional<double> laser_height;
+  std::optional<MapMode> mode;
+};
 struct SetPathParams { std::vector<Point> waypoints; double length = 0; };
 struct SetPoseParams { double x = 0, y = 0; std::optional<double> theta; };
 struct ErrorParams { std::optional<unsigned long long> request_id; ErrorCode code = ErrorCode::Internal; std::string message; };

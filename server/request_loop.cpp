@@ -11,6 +11,7 @@
 #include "protocol/connection.h"
 #include "protocol/map_store.h"
 #include "protocol/ops.h"
+#include "protocol/scene_store.h"
 #include "server/handlers/handler.h"
 
 namespace fleetmap {
@@ -63,6 +64,7 @@ void RequestLoop::run() {
   // Idle back-off: poll again at once after work, then wait longer and longer, up to
   // poll_max_ms, while rr stays empty (SPEC 9: a tight loop burns a core).
   double idle_ms = 0;
+  unsigned housekeeping_passes = 0;
   while (!stop_) {
     size_t done = 0;
     try {
@@ -73,6 +75,9 @@ void RequestLoop::run() {
         done += push_operations();
         mark_lost_robots();
         drop_orphan_requests();
+        // Every 2 s: delete observations past their time (SetObject, issue 8); the maps
+        // and views skip them from expires_at on already.
+        if (housekeeping_passes++ % 20 == 0) SceneStore(*conn_).expire_observations();
         next_housekeeping_ = std::chrono::steady_clock::now() + std::chrono::milliseconds(100);
       }
     } catch (const mysqlpp::BadQuery& e) {

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <random>
 #include <regex>
 #include <sstream>
@@ -44,6 +45,56 @@ void finite(std::initializer_list<double> vs) {
     if (!std::isfinite(v)) throw std::invalid_argument("expected finite coordinates");
 }
 
+// The profile options of `robot add` and `robot set` (issue 8), as given on the command line.
+struct ProfileOptions {
+  std::string laser_height, radius, body_height;  // a number of metres, or "default"
+  bool stairs = false, no_stairs = false, ramps = false, no_ramps = false;
+};
+
+void add_profile_options(CLI::App& cmd, ProfileOptions& o) {
+  cmd.add_option("--laser-height", o.laser_height,
+                 "laser mounting height over the floor, m, [0, 1000]: its maps are sliced there (default: the stored map "
+                 "unsliced); 'default' clears it");
+  cmd.add_option("--radius", o.radius, "radius, m, (0, 100]: kept from obstacles when planning; 'default': the server's");
+  cmd.add_option("--height", o.body_height,
+                 "body height, m, (0, 1000]: elements starting below it block the robot; 'default': the server's");
+  auto* stairs = cmd.add_flag("--stairs", o.stairs, "it can take stairs");
+  auto* no_stairs = cmd.add_flag("--no-stairs", o.no_stairs, "it cannot take stairs (the default)");
+  auto* ramps = cmd.add_flag("--ramps", o.ramps, "it can take ramps (the default)");
+  auto* no_ramps = cmd.add_flag("--no-ramps", o.no_ramps, "it cannot take ramps");
+  stairs->excludes(no_stairs);
+  ramps->excludes(no_ramps);
+}
+
+// "default" -> nullopt (the server's default); a number otherwise. Ranges: check_profile.
+std::optional<std::optional<double>> profile_value(const std::string& flag, const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  if (text == "default") return std::optional<double>();
+  size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size())
+    throw std::invalid_argument(flag + ": expected a number of metres or 'default', got '" + text + "'");
+  return std::optional<double>(v);
+}
+
+RobotProfileChange profile_change(const ProfileOptions& o) {
+  RobotProfileChange c;
+  c.laser_height = profile_value("--laser-height", o.laser_height);
+  c.radius = profile_value("--radius", o.radius);
+  c.body_height = profile_value("--height", o.body_height);
+  if (o.stairs || o.no_stairs) c.can_stairs = o.stairs;
+  if (o.ramps || o.no_ramps) c.can_ramps = o.ramps;
+  check_profile(c);
+  return c;
+}
+
+std::string metres(const std::optional<double>& v) { return v ? opt(v, "%g") : "default"; }
+
 }  // namespace
 
 void add_robot_commands(CLI::App& app, CliContext& ctx, int* exit_code) {
@@ -62,10 +113,21 @@ void add_robot_commands(CLI::App& app, CliContext& ctx, int* exit_code) {
         ->check(CLI::ExistingFile);
     cmd->add_option("--password-out", *pw_out, "write the generated password to this file (mode 600)");
     cmd->add_option("--max-connections", *max_conn, "MAX_USER_CONNECTIONS of the account")->capture_default_str();
+    auto profile = std::make_shared<ProfileOptions>();
+    add_profile_options(*cmd, *profile);
     cmd->callback([=, &ctx] {
+      // Bad values before the account exists. The whole profile is written: a robot added
+      // again keeps its row (sql/40_robot_accounts.sql), not its old profile.
+      RobotProfileChange change = profile_change(*profile);
+      if (!change.laser_height) change.laser_height.emplace();
+      if (!change.radius) change.radius.emplace();
+      if (!change.body_height) change.body_height.emplace();
+      if (!change.can_stairs) change.can_stairs = false;
+      if (!change.can_ramps) change.can_ramps = true;
       const std::string pw = pw_file->empty() ? generate_password() : read_password(*pw_file);
       FleetStore fleet(ctx.connection());
       const unsigned id = fleet.add_robot(*name, pw, *map, *max_conn);
+      fleet.set_profile(*name, change);
       std::printf("robot '%s' added: robot id %u, map '%s'\n", name->c_str(), id, map->c_str());
       if (pw_file->empty()) {
         if (!pw_out->empty()) {
@@ -80,12 +142,39 @@ void add_robot_commands(CLI::App& app, CliContext& ctx, int* exit_code) {
     });
   }
   {
-    auto* cmd = robot->add_subcommand("list", "list registered robots");
+    auto* cmd = robot->add_subcommand("list", "list registered robots and their profiles ('default': the server's)");
     cmd->callback([=, &ctx] {
       FleetStore fleet(ctx.connection());
-      std::printf("%-6s %-20s %-20s %-9s\n", "ID", "NAME", "MAP", "STATE");
-      for (const RobotStatus& s : fleet.status())
-        std::printf("%-6u %-20s %-20s %-9s\n", s.id, s.name.c_str(), s.map.c_str(), s.state.c_str());
+      const std::map<std::string, RobotProfile> profiles = fleet.profiles();
+      std::printf("%-6s %-20s %-20s %-9s %-8s %-8s %-8s %-6s %-5s\n", "ID", "NAME", "MAP", "STATE", "LASER", "RADIUS",
+                  "HEIGHT", "STAIRS", "RAMPS");
+      for (const RobotStatus& s : fleet.status()) {
+        auto it = profiles.find(s.name);
+        const RobotProfile p = it == profiles.end() ? RobotProfile{} : it->second;
+        std::printf("%-6u %-20s %-20s %-9s %-8s %-8s %-8s %-6s %-5s\n", s.id, s.name.c_str(), s.map.c_str(),
+                    s.state.c_str(), metres(p.laser_height).c_str(), metres(p.radius).c_str(),
+                    metres(p.body_height).c_str(), p.can_stairs ? "yes" : "no", p.can_ramps ? "yes" : "no");
+      }
+      *exit_code = exit_code::kOk;
+    });
+  }
+  {
+    auto name = std::make_shared<std::string>();
+    auto profile = std::make_shared<ProfileOptions>();
+    auto* cmd = robot->add_subcommand("set", "change a robot's profile; its next map (Ready, GetMap) follows it");
+    cmd->add_option("NAME", *name, "robot name")->required();
+    add_profile_options(*cmd, *profile);
+    cmd->callback([=, &ctx] {
+      const RobotProfileChange change = profile_change(*profile);
+      if (change.empty())
+        throw CLI::ValidationError("robot set", "expected at least one of --laser-height, --radius, --height, "
+                                                "--stairs, --no-stairs, --ramps, --no-ramps");
+      FleetStore fleet(ctx.connection());
+      fleet.set_profile(*name, change);
+      const RobotProfile p = fleet.profile(*name);
+      std::printf("robot '%s': laser height %s, radius %s, height %s, stairs %s, ramps %s\n", name->c_str(),
+                  metres(p.laser_height).c_str(), metres(p.radius).c_str(), metres(p.body_height).c_str(),
+                  p.can_stairs ? "yes" : "no", p.can_ramps ? "yes" : "no");
       *exit_code = exit_code::kOk;
     });
   }

@@ -42,6 +42,8 @@ int main(int argc, char** argv) {
   setting("--max-image-bytes", "max_image_bytes", "SendImage payload limit (default 8 MiB)");
   setting("--goal-tolerance", "goal_tolerance_m", "Stopped within this of the goal -> task done, m (default 0.5)");
   setting("--robot-radius", "robot_radius_m", "radius robots are planned with (GetPath), m (default 0.3)");
+  setting("--object-ttl", "object_ttl_s",
+          "SetObject: an observed object expires this long after it was last seen, s (default 300)");
   setting("--commit-delay-ms", "commit_delay_ms",
           "tests only: wait this long before each batch's COMMIT, so that a SIGKILL lands in flight (default 0)");
   std::string log_level = "info";

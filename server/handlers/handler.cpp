@@ -2,6 +2,7 @@
 
 #include "common/map_window.h"
 #include "protocol/map_codec.h"
+#include "server/robot_map_source.h"
 
 namespace fleetmap {
 
@@ -36,15 +37,18 @@ void answer_map(HandlerContext& ctx, const Rect* window, MapEncoding encoding) {
     throw ProtocolError(ErrorCode::Internal, "no map is assigned to this robot; ask an operator (fleetmap robot add --map)");
   const std::optional<MapInfo> info = ctx.map_info();
   if (!info) throw ProtocolError(ErrorCode::Internal, "the robot's map was deleted; ask an operator");
-  Map m;
+  std::optional<Rect> r;
   if (window) {
-    const Rect r = intersection(*window, info->border.rect());
-    if (r.empty()) throw ProtocolError(ErrorCode::BadParams, "params: expected a window that overlaps the map's border");
-    m = ctx.maps.window(info->id, r);
-  } else {
-    m = *ctx.map_cache.get(ctx.maps, info->id, info->name);
+    r = intersection(*window, info->border.rect());
+    if (r->empty()) throw ProtocolError(ErrorCode::BadParams, "params: expected a window that overlaps the map's border");
   }
-  ctx.answer(AnswerOp::SetMap, encode(set_map_params(m, encoding)), encode_map(m, encoding));
+  // The map the robot's laser sees (issue 8); without a laser height in its profile, the
+  // stored map as before (server/robot_map_source.h).
+  const std::optional<double> laser_height = ctx.robot.laser_height;
+  const Map m = RobotMapSource::shared().map(ctx.maps, ctx.map_cache, *info, r, laser_height);
+  SetMapParams p = set_map_params(m, encoding);
+  p.laser_height = laser_height;
+  ctx.answer(AnswerOp::SetMap, encode(p), encode_map(m, encoding));
 }
 
 }  // namespace fleetmap
