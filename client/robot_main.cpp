@@ -1,5 +1,7 @@
 // fleetmap-robot: a simulated robot that speaks RR/SA with its own account (SPEC 6).
-// Parses options and runs client/sim/SimRobot.
+// Parses options and runs client/sim/SimRobot; with --trials, runs the localization
+// trials of bench-localization instead (client/localization/localization_trials.h), no
+// database needed.
 #include <csignal>
 #include <unistd.h>
 
@@ -9,15 +11,60 @@
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
+#include "client/localization/localization_trials.h"
 #include "client/robot_client.h"
 #include "client/sim/sim_robot.h"
 #include "common/amrl_import.h"
+#include "common/grid_ray_caster.h"
 #include "common/seed_format.h"
 #include "protocol/connection.h"
 
 namespace {
 std::atomic<bool> g_stop{false};
 extern "C" void on_signal(int) { g_stop = true; }
+
+// --trials: the report of bench-localization through the same runner, with the robot's
+// laser and particle count. Returns the exit code.
+int run_trials(int trials, std::vector<std::string> maps, const std::string& presets, bool skip_tracking,
+               const fleetmap::SimRobotOptions& o) {
+  namespace loc = fleetmap::localization;
+  loc::TrialSettings s;
+  s.trials = trials;
+  s.updates = 10;  // the criterion: within 10 updates
+  s.seed = o.seed;
+  s.laser = o.laser;
+  s.filter.particles = o.global_particles;
+  s.filter.beams = o.laser.beams;
+  s.filter.fov = o.laser.fov;
+  s.filter.laser = {o.laser_height, 15.0};
+  std::vector<std::string> names;
+  for (size_t at = 0; at <= presets.size();) {
+    const size_t comma = std::min(presets.find(',', at), presets.size());
+    names.push_back(presets.substr(at, comma - at));
+    at = comma + 1;
+  }
+  for (const std::string& n : names)
+    if (!loc::preset(n)) {
+      std::cerr << "--presets: expected seed, robust or search, got " << n << "\n";
+      return 64;
+    }
+  if (maps.empty()) maps = {"maps/amrl/GDC1.vectormap.txt", "maps/amrl/UT_Campus.vectormap.txt"};
+  try {
+    for (const std::string& path : maps) {
+      const fleetmap::Map map = loc::load_map_file(path);
+      std::shared_ptr<const fleetmap::RayCaster> world = std::make_shared<fleetmap::GridRayCaster>(map, s.filter.laser);
+      loc::report_map_header(stdout, path, map, s);
+      for (const std::string& n : names) loc::report_preset(stdout, map, world, s, n, true, !skip_tracking);
+    }
+  } catch (const fleetmap::MapFormatError& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "fleetmap-robot: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -38,7 +85,7 @@ int main(int argc, char** argv) {
   app.add_option("--user", user, "the robot's account");
   app.add_option("--password-file", password_file, "file holding the account's password")->check(CLI::ExistingFile);
   app.add_option("--world", world, "ground-truth map file (seed or AMRL); default: the map the server sends on Ready");
-  app.add_option("--start", start, "true start pose X Y THETA (m, m, rad)")->expected(3)->required();
+  app.add_option("--start", start, "true start pose X Y THETA (m, m, rad); required unless --trials")->expected(3);
   app.add_option("--duration", duration, "stop after this many seconds");
   app.add_option("--laser-height", o.laser_height, "laser mounting height hL (m)")->capture_default_str();
   app.add_option("--beams", o.laser.beams, "laser beams NL")->capture_default_str();
@@ -56,12 +103,29 @@ int main(int argc, char** argv) {
   app.add_option("--localize-updates", max_updates, "scans allowed for global localization")->capture_default_str();
   app.add_option("--magic", magic, "magic of the Ready (default: the process id)");
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error")->capture_default_str();
+  int trials = 0;
+  std::vector<std::string> map_files;
+  std::string presets = "seed,search";
+  bool skip_tracking = false;
+  app.add_option("--trials", trials,
+                 "run N global localization trials per map (and a 200 m tracking run) on simulated sensors, print "
+                 "the report of bench-localization and exit; no database");
+  app.add_option("--map-file", map_files, "maps for --trials (AMRL .vectormap.txt or seed .map); default "
+                                          "maps/amrl/GDC1 and UT_Campus");
+  app.add_option("--presets", presets, "filter presets for --trials, comma-separated: seed (the baseline), robust, "
+                                       "search (the robot's)")->capture_default_str();
+  app.add_flag("--skip-tracking", skip_tracking, "--trials: global localization only");
   app.footer("Exit codes: 0 ok, 1 failure (database, server), 2 bad input, 5 localization failed, 64 usage.");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 64;
+  }
+  if (trials > 0) return run_trials(trials, map_files, presets, skip_tracking, o);
+  if (start.size() != 3) {
+    std::cerr << "--start X Y THETA is required (or --trials N)\n";
+    return 64;
   }
   spdlog::set_level(spdlog::level::from_str(log_level));
   spdlog::set_pattern("%H:%M:%S.%e %^%-5l%$ [robot] %v");

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "client/localization/parallel.h"
+#include "client/localization/stitched_scan.h"
 #include "common/sweep_ray_caster.h"
 
 namespace fleetmap::localization {
@@ -64,6 +65,13 @@ ParticleFilterOptions ParticleFilterOptions::robust() {
   return o;
 }
 
+ParticleFilterOptions ParticleFilterOptions::robust_search() {
+  ParticleFilterOptions o = robust();
+  o.global_search = true;
+  o.global_density = 0;  // the search replaces the uniform cloud
+  return o;
+}
+
 ParticleFilter::ParticleFilter(const Map& map, ParticleFilterOptions options)
     : ParticleFilter(map, std::shared_ptr<const RayCaster>(make_fast_ray_caster(map, options.laser)), options) {}
 
@@ -87,6 +95,8 @@ void ParticleFilter::set_map(const Map& map, std::shared_ptr<const RayCaster> ca
   if (!caster) throw std::invalid_argument("ParticleFilter::set_map: caster: expected non-null");
   caster_ = std::move(caster);
   free_space_ = std::make_unique<FreeSpace>(map);
+  map_ = map;
+  search_.reset();  // built again on the new map when needed
 }
 
 void ParticleFilter::init_global(std::optional<double> compass) {
@@ -99,11 +109,66 @@ void ParticleFilter::init_global(std::optional<double> compass) {
     p = {q.x, q.y, compass ? compass_.sample(*compass, rng_) : any_heading(rng_)};
   }
   weights_.assign(n, 1.0 / n);
+  global_phase_ = options_.global_search && compass;
+  init_compass_ = compass;
+  searches_ = 0;
+  since_scan_ = {};
+  history_.clear();
+}
+
+bool ParticleFilter::reseed_from_search(double compass) {
+  if (!search_) {
+    GlobalSearchOptions so = options_.search;
+    so.field.margin = options_.laser.rmax;
+    so.field.laser_height = options_.laser.laser_height;
+    so.threads = options_.threads;
+    search_ = std::make_shared<GlobalSearch>(map_, so);
+  }
+  std::vector<const std::vector<double>*> scans;
+  std::vector<Odometry> odometry;
+  for (const Scan& h : history_) {
+    scans.push_back(&h.ranges);
+    odometry.push_back(h.since_previous);
+  }
+  const StitchedScan stitched = stitch_scans(scans, odometry, beams_, options_.laser.rmax, options_.search_points);
+  if (stitched.ranges.empty()) return false;
+  const std::vector<Pose>& at = stitched.poses;
+  std::vector<Candidate> found = search_->search(stitched.ranges, stitched.angles, std::numeric_limits<double>::infinity(), compass,
+                                                 compass_.half_width(), options_.search_candidates);
+  if (found.empty()) return false;
+  // Ranked again by the filter's own sensor model on cast rays, every scan at its pose:
+  // the likelihood field does not see through walls, eq. (4)-(5) do.
+  parallel_for(options_.threads, found.size(), [&](int, size_t begin, size_t end) {
+    std::vector<double> synthetic(beams_.size());
+    for (size_t i = begin; i < end; ++i) {
+      double ll = 0;
+      for (size_t k = 0; k < history_.size(); ++k) {
+        const Pose p = compose(found[i].pose, {at[k].x, at[k].y, at[k].theta});
+        caster_->cast_scan(p.point(), p.theta, beams_, synthetic.data());
+        ll += sensor_.log_weight(history_[k].ranges.data(), synthetic.data(), beams_.size());
+      }
+      found[i].score = ll;
+    }
+  });
+  std::stable_sort(found.begin(), found.end(), [](const Candidate& l, const Candidate& r) { return l.score > r.score; });
+  const size_t clusters = std::clamp<size_t>(options_.search_clusters, 1, found.size());
+  const size_t n = options_.particles;
+  poses_.resize(n);
+  std::normal_distribution<double> n01(0.0, 1.0);
+  for (size_t i = 0; i < n; ++i) {
+    const Pose& p = found[i % clusters].pose;
+    poses_[i] = {p.x + options_.search_sd_xy * n01(rng_), p.y + options_.search_sd_xy * n01(rng_),
+                 normalize_angle(p.theta + options_.search_sd_theta * n01(rng_))};
+  }
+  weights_.assign(n, 1.0 / n);
+  candidates_ = std::move(found);
+  return true;
 }
 
 void ParticleFilter::init_pose(const Pose& pose, double sd_xy, double sd_theta) {
   const size_t n = options_.particles;
   poses_.resize(n);
+  global_phase_ = false;
   std::normal_distribution<double> n01(0.0, 1.0);
   for (Pose& p : poses_)
     p = {pose.x + sd_xy * n01(rng_), pose.y + sd_xy * n01(rng_), normalize_angle(pose.theta + sd_theta * n01(rng_))};
@@ -118,9 +183,14 @@ void ParticleFilter::set_particles(std::vector<Pose> poses, std::vector<double> 
   for (double& w : weights) w /= sum;
   poses_ = std::move(poses);
   weights_ = std::move(weights);
+  global_phase_ = false;
 }
 
 void ParticleFilter::predict(const Odometry& odometry) {
+  if (global_phase_) {  // the stitched scans need the odometry between them
+    const Pose p = compose(compose(Pose{}, since_scan_), odometry);
+    since_scan_ = {p.x, p.y, p.theta};
+  }
   parallel_for(options_.threads, poses_.size(), [&](int k, size_t begin, size_t end) {
     std::mt19937_64& rng = chunk_rngs_[k];
     for (size_t i = begin; i < end; ++i) poses_[i] = motion_.sample(poses_[i], odometry, rng);
@@ -132,6 +202,15 @@ void ParticleFilter::update(const std::vector<double>& ranges, std::optional<dou
     throw std::invalid_argument("ParticleFilter::update: ranges: expected " + std::to_string(beams_.size()) +
                                 " beams, got " + std::to_string(ranges.size()));
   if (poses_.empty()) throw std::logic_error("ParticleFilter::update: no particles (call init_global or init_pose)");
+  if (global_phase_) {
+    history_.push_back({since_scan_, ranges});
+    since_scan_ = {};
+    reseed_from_search(compass.value_or(*init_compass_));
+    if (++searches_ >= std::max<size_t>(1, options_.search_updates)) {
+      global_phase_ = false;
+      history_.clear();
+    }
+  }
   const bool use_compass = compass && options_.compass_weight;
   const RayCaster& caster = *caster_;
   // Annealing (tempering_stages > 1): what a stage's phi leaves of the scan's exponent
@@ -155,21 +234,24 @@ void ParticleFilter::update(const std::vector<double>& ranges, std::optional<dou
         log_likelihood_[i] = ll;
       }
     });
-    const double phi = choose_tempering(log_likelihood_, budget);
-    const bool tempered = phi < budget;
-    budget -= phi;
-    // seed 000 eq. (6): w(t) = w(t-1) * 1 / sum_j 1 / L(delta_j), as logarithms (to the
-    // power phi when tempered).
-    for (size_t i = 0; i < poses_.size(); ++i) weights_[i] = std::log(weights_[i]) + phi * log_likelihood_[i];
-    normalize_weights();
-    // A tempered stage stopped at the target ESS: resample before the next one.
-    if (tempered || effective_sample_size() < options_.resample_threshold * poses_.size()) {
-      resample();
-      roughen();
-    }
+    budget -= weigh(budget);
   }
   last_phi_ = 1 - budget;
   ++updates_;
+}
+
+double ParticleFilter::weigh(double most) {
+  const double phi = choose_tempering(log_likelihood_, most);
+  // seed 000 eq. (6): w(t) = w(t-1) * 1 / sum_j 1 / L(delta_j), as logarithms (to the
+  // power phi when tempered).
+  for (size_t i = 0; i < poses_.size(); ++i) weights_[i] = std::log(weights_[i]) + phi * log_likelihood_[i];
+  normalize_weights();
+  // A tempered stage stopped at the target ESS: resample before the next one.
+  if (phi < most || effective_sample_size() < options_.resample_threshold * poses_.size()) {
+    resample();
+    roughen();
+  }
+  return phi;
 }
 
 double ParticleFilter::choose_tempering(const std::vector<double>& ll, double most) const {

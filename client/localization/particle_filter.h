@@ -11,6 +11,18 @@
 //    GridRayCaster unless one is given) and its weight is multiplied by eq. (6)
 //    (sensor_model.h), optionally by the compass term; particles are split over
 //    `threads` threads in fixed chunks.
+//  * global search (off in the seed's options, global_search.h): after init_global with a
+//    compass, the first search_updates updates (1 by default) replace the cloud before
+//    weighing it. The scans so far, stitched into the current robot frame by odometry
+//    (stitched_scan.h), are matched over every 0.1 m of free space and the compass's
+//    headings on a likelihood field; the search_candidates best places are ranked again
+//    by this filter's sensor model on cast rays (each scan at its pose: eq. 4-5 see the
+//    walls a likelihood field sees through); the NP particles go around the
+//    search_clusters best (N(place, search_sd_xy, search_sd_theta)) and the update goes
+//    on as usual. Why: a uniform cloud leaves the truth's neighbourhood empty on a large
+//    map (the seed's density, 0.6 per square metre, puts the nearest particle about
+//    0.6 m from the truth; 6000 over the campus, 0.03 per square metre, about 3 m), and
+//    the product of 131 beams tells a particle 0.5 m off from a wrong place poorly.
 //  * tempering (off in the seed's options): when one scan would leave fewer than
 //    tempering_ess * N particles effective, only its power phi < 1 is applied, the
 //    largest that keeps them (adaptive tempering, Jasra et al. 2011); with
@@ -40,6 +52,7 @@
 
 #include "client/localization/compass_prior.h"
 #include "client/localization/free_space.h"
+#include "client/localization/global_search.h"
 #include "client/localization/motion_model.h"
 #include "client/localization/pose.h"
 #include "client/localization/resampling.h"
@@ -68,6 +81,14 @@ struct ParticleFilterOptions {
   double roughening = 0.2;            // K; 0 disables
   double roughening_max_xy = 0.2;     // metres: caps of the jitter's standard deviation,
   double roughening_max_theta = deg2rad(1.0);  // so far-apart hypotheses do not blur
+  bool global_search = false;         // the global phase searches (above)
+  GlobalSearchOptions search;         // its likelihood field; margin and hL set from laser
+  size_t search_candidates = 2000;    // places the likelihood field keeps (M)
+  size_t search_clusters = 200;       // of those, the best by cast rays that get particles
+  size_t search_updates = 1;          // updates that search (bench: more did not help)
+  size_t search_points = 262;         // at most this many stitched points (2 NL) searched
+  double search_sd_xy = 0.1;          // metres: spread of a cluster (the field's cell)
+  double search_sd_theta = deg2rad(0.7);  // radians: about the search's heading step
   bool adaptive = false;              // KLD sampling instead of a fixed NP
   KldOptions kld;
   double cluster_cell = 1.0;              // metres, for PoseEstimate::pose
@@ -82,6 +103,9 @@ struct ParticleFilterOptions {
   // the beams with a floor (gamma 0.1) instead of eq. (6), adaptive tempering (ESS 30 %,
   // 3 stages), and 0.3 particles per square metre at initialisation.
   static ParticleFilterOptions robust();
+  // robust() whose global cloud comes from the global search instead of a uniform draw:
+  // what fleetmap-robot and SimRobot use.
+  static ParticleFilterOptions robust_search();
 };
 
 struct PoseEstimate {
@@ -109,8 +133,12 @@ class ParticleFilter {
 
   // Global localization: NP particles (global_density) uniform over free space,
   // headings within the compass's +-half width of the reading, or uniform in (-pi, pi]
-  // without one.
+  // without one. With global_search and a compass, the next search_updates updates
+  // search first (above).
   void init_global(std::optional<double> compass);
+  // The search to use (shared between filters on the same map, e.g. trials); without
+  // one, the filter builds its own at the first global search after set_map.
+  void set_global_search(std::shared_ptr<const GlobalSearch> search) { search_ = std::move(search); }
   // Tracking from a known pose: NP particles from N(pose, diag(sd_xy, sd_xy, sd_theta)).
   void init_pose(const Pose& pose, double sd_xy, double sd_theta);
   // Any particle set (a saved state, a test's); weights are normalized here. Throws
@@ -135,6 +163,10 @@ class ParticleFilter {
   size_t resamplings() const { return resamplings_; }
   // Sum of the phi applied by the last update's stages: 1 when the scan counted in full.
   double last_tempering() const { return last_phi_; }
+  // The candidates of the last global search, best first by cast rays (all M of them,
+  // score: the log-likelihood of the stitched scans), and whether updates still search.
+  const std::vector<Candidate>& last_candidates() const { return candidates_; }
+  bool searching() const { return global_phase_; }
 
  private:
   // The largest phi <= most that keeps tempering_ess of the particles effective.
@@ -143,6 +175,12 @@ class ParticleFilter {
   void normalize_weights();
   void resample();
   void roughen();
+  // The global phase's cloud from a search on the scans so far; false (cloud kept) when
+  // they hit nothing.
+  bool reseed_from_search(double compass);
+  // Weights from log-likelihoods (tempered), resampling and roughening when due; returns
+  // the phi applied, at most `most`.
+  double weigh(double most);
 
   ParticleFilterOptions options_;
   std::vector<double> beams_;
@@ -150,7 +188,19 @@ class ParticleFilter {
   MotionModel motion_;
   CompassPrior compass_;
   std::shared_ptr<const RayCaster> caster_;
+  Map map_;  // for the global search, built when first needed
   std::unique_ptr<FreeSpace> free_space_;
+  std::shared_ptr<const GlobalSearch> search_;
+  struct Scan {
+    Odometry since_previous;  // odometry from the previous scan to this one
+    std::vector<double> ranges;
+  };
+  bool global_phase_ = false;
+  std::optional<double> init_compass_;  // the reading of init_global
+  Odometry since_scan_;                 // odometry since the last scan, in the global phase
+  std::vector<Scan> history_;           // the global phase's scans, oldest first
+  size_t searches_ = 0;
+  std::vector<Candidate> candidates_;
   std::vector<Pose> poses_;
   std::vector<double> weights_;  // normalized, sum 1
   std::vector<double> log_likelihood_;  // of the last scan, per particle

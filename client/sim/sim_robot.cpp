@@ -22,7 +22,8 @@ SimRobot::SimRobot(RobotClient& client, const Map& world, Pose start, const Map&
       pursuit_(o.pursuit),
       rng_(o.seed + 2),
       map_(first_map) {
-  loc::ParticleFilterOptions fo;
+  // The preset that localizes best on the real maps (bench-localization, docs/localization.md).
+  loc::ParticleFilterOptions fo = loc::ParticleFilterOptions::robust_search();
   fo.particles = o.global_particles;
   fo.beams = o.laser.beams;
   fo.fov = o.laser.fov;
