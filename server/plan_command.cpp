@@ -13,6 +13,7 @@
 #include "common/amrl_import.h"
 #include "common/map_planner.h"
 #include "common/map_svg.h"
+#include "common/planning_scene.h"
 #include "common/seed_format.h"
 #include "protocol/map_store.h"
 #include "server/exit_codes.h"
@@ -24,6 +25,8 @@ struct PlanArgs {
   std::vector<std::string> positional;  // [MAP] X1 Y1 X2 Y2
   std::string file, svg;
   PlannerOptions planner;
+  double body_height = 1.0;  // the server's default body_height_m
+  ObjectSource objects;      // the stored map's scene, or --objects F with --file (issue 8)
 };
 
 double parse_coordinate(const std::string& text, const char* name) {
@@ -39,6 +42,14 @@ Map load_map(const PlanArgs& a, CliContext& ctx, std::string* name) {
   return load_map_source(a.file.empty() ? a.positional[0] : "", a.file, ctx);
 }
 
+// Why an object blocks: it starts below the body's top (see --body-height).
+std::string body_note(const std::string& name, const PlanArgs& a) {
+  if (name.rfind("object:", 0) != 0) return "";
+  char b[64];
+  std::snprintf(b, sizeof b, ", which a body %g m tall cannot pass (see --body-height)", a.body_height);
+  return b;
+}
+
 std::string describe(Point p) {
   char buf[80];
   std::snprintf(buf, sizeof buf, "(%.3f, %.3f)", p.x, p.y);
@@ -46,19 +57,24 @@ std::string describe(Point p) {
 }
 
 // "start (1, 2) is blocked: ..." for the status of a blocked end.
-std::string blocked_message(const char* which, Point p, const Collision& c, const PlannerOptions& o) {
+std::string blocked_message(const char* which, Point p, const Collision& c, const PlanArgs& a,
+                            const PlanningObstacles& obstacles) {
   std::string s = std::string(which) + " " + describe(p) + " is blocked: ";
   char r[32];
-  std::snprintf(r, sizeof r, "%g m", o.radius);
+  std::snprintf(r, sizeof r, "%g m", a.planner.radius);
+  const auto named = obstacles.names.find(c.obstacle_id);
   switch (c.kind) {
     case Collision::Kind::Border:
       return s + "a robot of radius " + r + " centred there does not fit inside the map's border";
     case Collision::Kind::Area:
+      if (named != obstacles.names.end()) return s + "it is inside " + named->second + body_note(named->second, a);
       return s + "it is on the stairs of obstacle " + std::to_string(c.obstacle_id) +
              ", which a wheeled robot may not enter (see --climb-stairs)";
     case Collision::Kind::Segment:
       break;
   }
+  if (named != obstacles.names.end())
+    return s + "it is within the robot radius " + r + " of " + named->second + body_note(named->second, a);
   return s + "it is within the robot radius " + r + " of obstacle " + std::to_string(c.obstacle_id);
 }
 
@@ -80,16 +96,18 @@ int run_plan(const PlanArgs& a, CliContext& ctx) {
   const Point start{parse_coordinate(a.positional[k], "X1"), parse_coordinate(a.positional[k + 1], "Y1")};
   const Point goal{parse_coordinate(a.positional[k + 2], "X2"), parse_coordinate(a.positional[k + 3], "Y2")};
   std::string name;
+  const Scene scene = load_scene_source(a.file.empty() ? a.positional[0] : "", a.file, a.objects, ctx);
   const Map map = load_map(a, ctx, &name);
 
-  const MapPlanner planner(map, a.planner);
+  const MapPlanner planner(map, planning_obstacles(map, scene, a.body_height, a.planner.robot), a.planner);
+  const PlanningObstacles& obstacles = planner.checker().obstacles();
   const PlanResult r = planner.plan(start, goal);
   switch (r.status) {
     case PlanStatus::StartBlocked:
-      std::cerr << "fleetmap plan: " << blocked_message("start", start, *r.collision, a.planner) << "\n";
+      std::cerr << "fleetmap plan: " << blocked_message("start", start, *r.collision, a, obstacles) << "\n";
       return exit_code::kNoPath;
     case PlanStatus::GoalBlocked:
-      std::cerr << "fleetmap plan: " << blocked_message("goal", goal, *r.collision, a.planner) << "\n";
+      std::cerr << "fleetmap plan: " << blocked_message("goal", goal, *r.collision, a, obstacles) << "\n";
       return exit_code::kNoPath;
     case PlanStatus::NoPath:
       std::fprintf(stderr,
@@ -124,6 +142,10 @@ void add_plan_command(CLI::App& app, CliContext& ctx, int* exit_code) {
   cmd->add_option("--file", a->file, "plan on a map file instead of a stored map (seed format; AMRL if *.vectormap.txt)");
   cmd->add_option("--radius", a->planner.radius, "robot radius (m)")->check(CLI::Range(0.0, 100.0))->capture_default_str();
   cmd->add_option("--seed", a->planner.seed, "random seed (same seed, same path)")->capture_default_str();
+  cmd->add_option("--body-height", a->body_height, "the robot's height (m): objects starting below it block")
+      ->check(CLI::Range(0.0, 1000.0))
+      ->capture_default_str();
+  add_object_source_options(*cmd, a->objects);
   cmd->add_flag("--climb-stairs", a->planner.robot.can_climb_stairs, "the robot climbs stairs (default: wheeled)");
   cmd->add_option("--attempts", a->planner.attempts, "RRT-Connect runs, the shortest kept")
       ->check(CLI::Range(1, 1000))
@@ -133,6 +155,8 @@ void add_plan_command(CLI::App& app, CliContext& ctx, int* exit_code) {
       ->capture_default_str();
   cmd->add_option("--svg", a->svg, "also draw the map and the path into this SVG file");
   cmd->footer(
+      "The map's objects whose height range starts below --body-height block, and so does every avoided area "
+      "(docs/semantic-layer.md, 'Planning with objects'). "
       "Prints one 'x y' waypoint a line, then 'length L'. Exit codes: 0 path found, 2 malformed input, "
       "3 no path (start or goal blocked, or none found within the limits), 4 no such map, 64 usage.");
   cmd->callback([a, &ctx, exit_code] { *exit_code = run_plan(*a, ctx); });

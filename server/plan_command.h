@@ -1,9 +1,13 @@
 #pragma once
 // Operator command: plan a path on a stored map or a map file (SPEC 7).
 //
-//   fleetmap plan MAP X1 Y1 X2 Y2 [--radius R] [--seed S] [--svg OUT] ...
-//   fleetmap plan --file F X1 Y1 X2 Y2 ...      (seed format, or AMRL for *.vectormap.txt;
-//                                               no database)
+//   fleetmap plan MAP X1 Y1 X2 Y2 [--radius R] [--body-height H] [--seed S] [--svg OUT] ...
+//   fleetmap plan --file F [--objects F.geojson] X1 Y1 X2 Y2 ...   (seed format, or AMRL for
+//                                               *.vectormap.txt; no database)
+//
+// The map's objects whose range starts below H block, and every avoided area (issue 8,
+// common/planning_scene.h): a stored map's scene, or --objects with --file; --no-objects
+// plans on the segments alone.
 //
 // Prints the smoothed path on standard output, one "x y" waypoint a line (millimetres),
 // then "length L"; a summary goes to standard error. Exit codes (server/exit_codes.h):

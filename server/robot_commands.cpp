@@ -13,6 +13,7 @@
 
 #include "protocol/fleet_store.h"
 #include "server/exit_codes.h"
+#include "server/goal_near_command.h"
 
 namespace fleetmap {
 namespace {
@@ -207,12 +208,22 @@ void add_robot_commands(CLI::App& app, CliContext& ctx, int* exit_code) {
   }
   {
     auto name = std::make_shared<std::string>();
-    auto xy = std::make_shared<std::array<double, 2>>();
+    auto xy = std::make_shared<std::vector<double>>();
+    auto near = std::make_shared<GoalNearArgs>();
     auto* cmd = app.add_subcommand("goal", "assign a task: the server pushes SetPosEnd to the robot");
     cmd->add_option("ROBOT", *name, "robot name")->required();
-    cmd->add_option("X", (*xy)[0], "goal x (m)")->required();
-    cmd->add_option("Y", (*xy)[1], "goal y (m)")->required();
+    cmd->add_option("XY", *xy, "X Y: the goal (m); or --near TAG")->expected(2);
+    add_goal_near_options(*cmd, *near);
+    cmd->footer("With --near TAG the goal is a free point beside the nearest object with that tag, reachable from the "
+                "robot's last pose (or initial pose) with the server's planner (docs/semantic-layer.md). Exit codes: 0 "
+                "assigned, 2 bad value, 3 no free reachable point beside the object, 4 no such robot, no object with "
+                "the tag, or no known position, 64 usage.");
     cmd->callback([=, &ctx] {
+      if (xy->empty() == near->tag.empty()) throw CLI::ValidationError("expected X Y or --near TAG (one of them)");
+      if (!near->tag.empty()) {
+        *exit_code = assign_goal_near(ctx, *name, *near);
+        return;
+      }
       finite({(*xy)[0], (*xy)[1]});
       const auto task = FleetStore(ctx.connection()).assign_goal(*name, (*xy)[0], (*xy)[1]);
       std::printf("task %llu assigned to '%s': goal (%g, %g)\n", task, name->c_str(), (*xy)[0], (*xy)[1]);

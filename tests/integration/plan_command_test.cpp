@@ -66,6 +66,34 @@ TEST(PlanCommand, NoPathAndBlockedEndsExitWith3) {
   EXPECT_NE(r.err.find("stairs of obstacle 6"), std::string::npos) << r.err;
 }
 
+// Issue 8: the stored map's objects and avoided areas block (by body height), the same as
+// a file with --objects; --no-objects plans on the segments alone.
+TEST(PlanCommand, ObjectsAndAvoidedAreasBlock) {
+  const std::string map = source_path("maps/example-room.map"), objects = source_path("maps/example-room.geojson");
+  ASSERT_EQ(run("fleetmap", "map import " + map + " --name it_plan_room --replace").exit_code, 0);
+  ASSERT_EQ(run("fleetmap", "objects import it_plan_room " + objects).exit_code, 0);
+  // Straight through the L-shaped keep-out zone (x 2..4, y 9..12) without the scene.
+  RunResult bare = run("fleetmap", "plan it_plan_room 1 10.5 5 10.5 --radius 0.25 --no-objects");
+  ASSERT_EQ(bare.exit_code, 0) << bare.err;
+  EXPECT_NEAR(parse(bare.out).length, 4, 1e-9);
+  const RunResult stored = run("fleetmap", "plan it_plan_room 1 10.5 5 10.5 --radius 0.25");
+  ASSERT_EQ(stored.exit_code, 0) << stored.err;
+  EXPECT_GT(parse(stored.out).length, 5);
+  const RunResult file = run("fleetmap", "plan --file " + map + " --objects " + objects + " 1 10.5 5 10.5 --radius 0.25");
+  ASSERT_EQ(file.exit_code, 0) << file.err;
+  EXPECT_EQ(file.out, stored.out);
+  // Deep inside the keep-out zone, and under the big table's top for a 1 m body.
+  RunResult r = run("fleetmap", "plan it_plan_room 1 10.5 2.5 11 --radius 0.25");
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(r.err.find("goal (2.500, 11.000) is blocked: it is inside avoid:keepout-1"), std::string::npos) << r.err;
+  r = run("fleetmap", "plan it_plan_room 1 10.5 7.5 7.5 --radius 0.25");
+  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_NE(r.err.find("inside object:table:big-table"), std::string::npos) << r.err;
+  r = run("fleetmap", "plan it_plan_room 1 10.5 7.5 7.5 --radius 0.25 --body-height 0.5");  // under the top
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(run("fleetmap", "plan it_plan_room 1 10.5 5 10.5 --objects " + objects).exit_code, 2);  // only with --file
+}
+
 TEST(PlanCommand, BadInputAndUsage) {
   const std::string file = source_path("maps/example-campus.map");
   EXPECT_EQ(run("fleetmap", "plan --file " + file + " 1 1 abc 3").exit_code, 2);
