@@ -63,6 +63,14 @@ Polygon polygon_from_wkb(const mysqlpp::String& s) {
   return ring;
 }
 
+// The first bytes of s, at most n, without cutting a UTF-8 character: the column would
+// refuse a broken sequence (error 1366, strict mode).
+std::string utf8_prefix(const std::string& s, size_t n) {
+  if (s.size() <= n) return s;
+  while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xC0) == 0x80) --n;
+  return s.substr(0, n);
+}
+
 // The reader's rule for tags (common/scene_geojson.cpp), within the column's 64 bytes.
 void check_tag(const std::string& t) {
   if (t.empty() || t.size() > 64) throw std::invalid_argument("expected a tag of 1-64 bytes, got '" + t + "'");
@@ -562,7 +570,7 @@ Observation SceneStore::record_observation(unsigned map_id, unsigned robot_id, P
   if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw std::invalid_argument("expected a finite position");
   if (!(ttl_s > 0 && std::isfinite(ttl_s))) throw std::invalid_argument("expected a time to live > 0 s");
   if (object.empty()) throw std::invalid_argument("expected an object name");
-  const std::string label = object.substr(0, 255);
+  const std::string label = utf8_prefix(object, 255);
   // The robot's name (for the key), the tag, and the sighting's time as the database keeps it.
   mysqlpp::Query q = c_.query();
   q << "SELECT r.db_user, (SELECT tag FROM tags WHERE tag = " << mysqlpp::quote << label << "), ";
@@ -602,7 +610,7 @@ Observation SceneStore::record_observation(unsigned map_id, unsigned robot_id, P
     << mysqlpp::quote << label << ", " << when << ", " << expires << ")";
   out.object_id = q.execute().insert_id();
   const std::string id = std::to_string(out.object_id);
-  out.key = robot + "/" + label.substr(0, 200) + "/" + id;
+  out.key = robot + "/" + utf8_prefix(label, 200) + "/" + id;
   q.reset();
   q << "UPDATE env_objects SET object_key = " << mysqlpp::quote << out.key << " WHERE id = " << id;
   q.execute();

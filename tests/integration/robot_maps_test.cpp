@@ -3,8 +3,7 @@
 // and read their answers with plain SQL from their own sa_mine; "2.5d" mode; a profile
 // changed with `robot set`; SetObject observations in the maps and their expiry; a robot
 // without a profile gets what it got before. Real fleetmap-server, real MariaDB.
-#include <algorithm>
-#include <set>
+#include <tuple>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -14,6 +13,7 @@
 #include "common/scene_geojson.h"
 #include "common/scene_laser.h"
 #include "common/seed_format.h"
+#include "protocol/connection.h"
 #include "tests/integration/server_fixture.h"
 #include "tests/integration/test_db.h"
 
@@ -54,6 +54,9 @@ class RobotMaps : public ::testing::Test {
   }
   void TearDown() override {
     server_.reset();
+    // This suite's observations go now, not when a sweep comes by.
+    execute(*admin(), std::string("DELETE o FROM env_objects o JOIN maps m ON m.id = o.map_id WHERE m.name = '") + kMap +
+                          "' AND o.source = 'observed'");
     if (HasFailure()) std::cerr << "server log:\n" << read_file(temp_path("rm_server.log")).substr(0, 20000);
   }
   static void set_profile(const std::string& robot, const std::string& options) {
@@ -285,6 +288,17 @@ TEST_F(RobotMaps, ObservedObjectsJoinEveryMapAndExpire) {
   EXPECT_EQ(scalar(reports), reported + 1);  // reports do not expire
   // Imported objects never expire.
   EXPECT_EQ(scalar("SELECT COUNT(*) FROM v_objects WHERE map = 'rm_room' AND source = 'imported' AND object_key = 'box-1'"), 1);
+}
+
+TEST_F(RobotMaps, LongObjectNamesAreStoredWhole) {
+  ready(*low_);
+  // 255 bytes, the most SetObject takes; the key holds 200 of them, which would cut an "é".
+  std::string name = "a";
+  for (int i = 0; i < 127; ++i) name += "\xc3\xa9";
+  const auto ack = ask(*low_, "SetObject", json{{"x", 5}, {"y", 12}, {"object", name}}.dump(), 1);
+  ASSERT_EQ(ack.size(), 1u);
+  EXPECT_EQ(ack[0].op, "OpAck") << ack[0].params.dump();
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM v_objects WHERE map = 'rm_room' AND robot = 'rm_low' AND LENGTH(label) = 255"), 1);
 }
 
 TEST_F(RobotMaps, SeenAgainKeepsAnObservationAlive) {
