@@ -11,14 +11,14 @@
 //   fleetmap map nav2 NAME (--robot R | --laser-height H) -o PREFIX [--resolution R]
 //
 // --robot reads the robot's profile (robots.laser_height; NULL: kDefaultLaserHeight, the
-// server's laser_height_m default).
+// laser height of the seed's robot class; the server sends such a robot the unsliced map).
 #include <CLI/CLI.hpp>
 
 #include "server/cli_context.h"
 
 namespace fleetmap {
 
-inline constexpr double kDefaultLaserHeight = 0.3;  // server_config.h laser_height_m
+inline constexpr double kDefaultLaserHeight = 0.3;
 
 // Adds `nav2` to the existing `map` subcommand of app; it sets *exit_code when it runs.
 void add_nav2_command(CLI::App& app, CliContext& ctx, int* exit_code);

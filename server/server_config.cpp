@@ -38,7 +38,6 @@ void ServerConfig::apply(const std::map<std::string, std::string>& s) {
     else if (k == "max_image_bytes") max_image_bytes = static_cast<size_t>(positive(k, v));
     else if (k == "goal_tolerance_m") goal_tolerance_m = positive(k, v);
     else if (k == "robot_radius_m") robot_radius_m = positive(k, v);
-    else if (k == "laser_height_m") laser_height_m = number(k, v, true);
     else if (k == "body_height_m") body_height_m = positive(k, v);
     else if (k == "object_ttl_s") object_ttl_s = positive(k, v);
     else if (k == "commit_delay_ms") commit_delay_ms = number(k, v, true);

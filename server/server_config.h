@@ -19,7 +19,6 @@ struct ServerConfig {
   size_t max_image_bytes = 8u << 20;  // SendImage payload limit
   double goal_tolerance_m = 0.5;      // Stopped within this of the goal -> task done
   double robot_radius_m = 0.3;        // GetPath plans for a disc of this radius (robots without a profile)
-  double laser_height_m = 0.3;        // maps are sliced at this height for robots without a profile
   double body_height_m = 1.0;         // elements starting below this block robots without a profile
   double object_ttl_s = 300;          // SetObject: an observation expires this long after its last sighting
   int lock_wait_timeout_s = 1;        // then find and end the robot connection that blocks

@@ -80,7 +80,8 @@ CREATE TABLE IF NOT EXISTS robots (
   created_at  TIMESTAMP(6) NOT NULL DEFAULT CURRENT_TIMESTAMP(6),
   removed_at  TIMESTAMP(6) NULL,
   -- profile (issue 8, seed 004): what the robot's map and plans depend on; NULL: the
-  -- server's defaults (laser_height_m, robot_radius_m, body_height_m in [server])
+  -- server's defaults (robot_radius_m, body_height_m in [server]); no laser height: the
+  -- robot gets the stored map unsliced
   laser_height DOUBLE NULL,                   -- m over the floor, of the laser its maps are sliced for
   radius      DOUBLE NULL,                    -- m, kept from every obstacle when planning
   body_height DOUBLE NULL,                    -- m: elements starting below this block it
