@@ -124,6 +124,7 @@ struct Settings {
   int people = 0;
   bool compass = true;
   double diverged = 1.0;
+  bool verbose = false;         // one line per run
   std::string model = "seed";  // seed: ParticleFilterOptions::seed_model(); robust: robust()
 };
 
@@ -231,6 +232,19 @@ void run_scenario(const Scenario& sc, const Settings& s) {
     differ.push_back(differing_beams(*world, wrong_caster, d, beams));
     results[0].push_back(track(right, d, s, seed + 11));
     results[1].push_back(track(wrong, d, s, seed + 11));
+    if (s.verbose) {
+      std::printf("  run %2d: %zu updates, start (%.2f, %.2f)", run + 1, d.steps.size(), d.start.x, d.start.y);
+      for (int m = 0; m < 2; ++m) {
+        const RunResult& r = results[m].back();
+        std::printf(" | %s RMS %.3f m, max %.2f m", m == 0 ? "right" : "wrong", r.rms(), r.max());
+        const auto lost = std::find_if(r.errors.begin(), r.errors.end(), [&](double e) { return e > s.diverged; });
+        if (lost != r.errors.end()) {
+          const Pose& t = d.steps[static_cast<size_t>(lost - r.errors.begin())].truth;
+          std::printf(", lost at update %td near (%.2f, %.2f)", lost - r.errors.begin(), t.x, t.y);
+        }
+      }
+      std::printf("\n");
+    }
   }
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("  beams whose range differs by > 0.1 m between the two maps along the drives: %.1f %% (median run)\n",
@@ -277,6 +291,7 @@ int main(int argc, char** argv) {
   app.add_option("--threads", s.threads, "filter threads")->capture_default_str()->check(CLI::PositiveNumber);
   app.add_option("--people", s.people, "unmodelled people per scan (the world only)")->capture_default_str();
   app.add_option("--diverged", s.diverged, "a run diverges when its error exceeds this (m)")->capture_default_str();
+  app.add_flag("--verbose", s.verbose, "one line per run (errors, where the filter was lost)");
   app.add_flag("!--no-compass", s.compass, "no compass term in the filter");
   app.add_option("--model", s.model, "the filter's sensor model: seed (eq. 4-6) or robust")
       ->capture_default_str()
@@ -286,11 +301,12 @@ int main(int argc, char** argv) {
   app.add_option("--room", room_map, "the room's map (seed format)")->capture_default_str();
   app.add_option("--objects", room_objects, "the room's objects (GeoJSON)")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // a table line as soon as it is known, also into a pipe
   Scenario room{"room", "", read_seed_file(room_map), read_scene_geojson(read_text(room_objects))};
   room.description = "the example room, 15 m x 15 m (" + room_map + ", " + room_objects + ")";
-  std::printf("seed 004 Fig. 9-10: laser at %.3f m; the world is the slice at %.3f m with objects; the filter "
-              "(seed 000 eq. 4-6) tracks on the slice at %.3f m (right) and at %.3f m (wrong)\n",
-              kRightHeight, kRightHeight, kRightHeight, kWrongHeight);
+  std::printf("seed 004 Fig. 9-10: laser at %.3f m; the world is the slice at %.3f m with objects; the particle "
+              "filter (model %s) tracks on the slice at %.3f m (right) and at %.3f m (wrong)\n",
+              kRightHeight, kRightHeight, s.model.c_str(), kRightHeight, kWrongHeight);
   if (scenes.find("room") != std::string::npos) run_scenario(room, s);
   if (scenes.find("hall") != std::string::npos) run_scenario(make_hall(room, tiles), s);
   return 0;

@@ -15,10 +15,11 @@
 //               caster and free space). Each step's trigger check is timed with its update.
 //
 // Timed per update (predict + update, plus the trigger check and any refresh for the
-// window), for two ray casters: the robot's (GridRayCaster, a spatial index whose cost
-// per ray hardly depends on the map's size) and the seed's bounding-circle method
-// (SeedRayCaster, one test per obstacle, as the seed's robot would cast), the latter on
-// fewer particles (--seed-particles) because it is that much slower.
+// window), the two filters in lockstep, for three ray casters: the robot's
+// (GridRayCaster, a spatial index whose cost per ray hardly depends on the map's size),
+// the seed's bounding-circle method (SeedRayCaster, seed 000: obstacles culled by their
+// circles once per scan), and every segment per ray (no index: the map handled in full,
+// the way seed 002's cost behaves, on --brute-particles particles because it is slow).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -27,6 +28,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -39,6 +41,8 @@
 #include "common/amrl_import.h"
 #include "common/grid_ray_caster.h"
 #include "common/map_window.h"
+#include "common/ray_rules.h"
+#include "common/ray_segment.h"
 #include "common/seed_format.h"
 #include "common/seed_ray_caster.h"
 
@@ -59,7 +63,7 @@ struct Settings {
   std::string map = "maps/amrl/UT_Campus.vectormap.txt";
   double drive = 300;
   double window = 40, refresh = 10;
-  size_t particles = 500, seed_particles = 50;
+  size_t particles = 500, seed_particles = 500, brute_particles = 50;
   int threads = 1;
   int runs = 1;
   uint64_t seed = 1;
@@ -118,6 +122,29 @@ double mean(const std::vector<double>& v) {
   return v.empty() ? 0 : s / v.size();
 }
 
+// Every segment tested for every ray, no index and no culling: the map handled in full,
+// as seed 002's robot handled its elements (Fig. 8: "the computed time is always constant
+// due of the lack of variations in the number of elements managed"). Walls only (the
+// AMRL maps have nothing else): a segment stops the ray when it is at least hL high.
+class BruteRayCaster : public RayCaster {
+ public:
+  BruteRayCaster(const Map& map, RayCasterOptions options) : options_(options) {
+    for (const Obstacle& o : map.obstacles)
+      for (const Segment& g : o.segments)
+        if (stops_laser(g.h, options.laser_height)) segments_.push_back(prepare_segment(g.a, g.b));
+  }
+  double cast_direction(Point origin, Point dir) const override {
+    double best = options_.rmax;
+    for (const RaySegment& g : segments_) best = std::min(best, ray_segment_distance(g, origin, dir));
+    return best;
+  }
+  const RayCasterOptions& options() const override { return options_; }
+
+ private:
+  RayCasterOptions options_;
+  std::vector<RaySegment> segments_;
+};
+
 using CasterFactory = std::function<std::shared_ptr<const RayCaster>(const Map&)>;
 
 ParticleFilterOptions filter_options(const Settings& s, size_t particles, uint64_t seed) {
@@ -128,57 +155,69 @@ ParticleFilterOptions filter_options(const Settings& s, size_t particles, uint64
   return o;
 }
 
-// The whole map: one caster, built once (its build time counted once).
-Timing run_whole(const Map& map, const Drive& d, const Settings& s, size_t particles, const CasterFactory& caster,
-                 uint64_t seed) {
-  Timing t;
-  auto t0 = Clock::now();
-  ParticleFilter pf(map, caster(map), filter_options(s, particles, seed));
-  t.build = seconds_since(t0);
-  pf.init_pose(d.start, 0.1, deg2rad(2.0));
-  for (size_t i = 0; i < d.steps.size(); ++i) {
-    t0 = Clock::now();
-    pf.predict(d.steps[i].odometry);
-    pf.update(d.scans[i], d.compass[i]);
-    t.updates.push_back(seconds_since(t0));
-    t.segments.push_back(map.segment_count());
-    const Pose e = pf.estimate().pose, truth = d.steps[i].truth;
-    t.sq_error += std::pow(e.x - truth.x, 2) + std::pow(e.y - truth.y, 2), ++t.n;
-  }
-  return t;
-}
-
-// The zoom window: ZoomMap decides from the filter's estimate; a refresh clips the map
-// around it and installs the window (new caster and free space, particles kept).
-Timing run_zoom(const Map& map, const Drive& d, const Settings& s, size_t particles, const CasterFactory& caster,
-                uint64_t seed) {
-  Timing t;
-  ZoomMap zoom({s.window, s.refresh, 1e18});  // no time-out: the drive has no clock
-  auto window_at = [&](Point c) { return clip_map(map, window_rect(map.border, c, s.window, s.window)); };
-  auto t0 = Clock::now();
-  Map window = window_at({d.start.x, d.start.y});
-  ParticleFilter pf(window, caster(window), filter_options(s, particles, seed));
-  zoom.on_window({d.start.x, d.start.y}, 0);
-  t.build = seconds_since(t0);
-  pf.init_pose(d.start, 0.1, deg2rad(2.0));
-  for (size_t i = 0; i < d.steps.size(); ++i) {
-    t0 = Clock::now();
-    const Point here = pf.estimate().pose.point();
-    if (zoom.needs_refresh(here, static_cast<double>(i)) != ZoomMap::Reason::None) {
-      const auto r0 = Clock::now();
-      window = window_at(here);
-      pf.set_map(window, caster(window));
-      zoom.on_window(here, static_cast<double>(i));
-      t.refreshes.push_back(seconds_since(r0));
+// One filter along the drive: on the whole map (one caster, built once) or on a zoom
+// window (ZoomMap decides from the filter's estimate; a refresh clips the map around it
+// and installs the window: new caster and free space, particles kept).
+class Tracker {
+ public:
+  Tracker(const Map& map, const Drive& d, const Settings& s, size_t particles, const CasterFactory& caster,
+          uint64_t seed, bool zoom)
+      : map_(map), s_(s), caster_(caster), zoom_(ZoomMapOptions{s.window, s.refresh, 1e18}), use_zoom_(zoom) {
+    const auto t0 = Clock::now();
+    if (use_zoom_) {
+      window_ = window_at({d.start.x, d.start.y});
+      zoom_.on_window({d.start.x, d.start.y}, 0);  // no time-out: the drive has no clock
     }
-    pf.predict(d.steps[i].odometry);
-    pf.update(d.scans[i], d.compass[i]);
+    const Map& m = use_zoom_ ? window_ : map_;
+    pf_ = std::make_unique<ParticleFilter>(m, caster_(m), filter_options(s, particles, seed));
+    t.build = seconds_since(t0);
+    pf_->init_pose(d.start, 0.1, deg2rad(2.0));
+  }
+
+  void step(const Drive& d, size_t i) {
+    const auto t0 = Clock::now();
+    if (use_zoom_) {
+      const Point here = pf_->estimate().pose.point();
+      if (zoom_.needs_refresh(here, static_cast<double>(i)) != ZoomMap::Reason::None) {
+        const auto r0 = Clock::now();
+        window_ = window_at(here);
+        pf_->set_map(window_, caster_(window_));
+        zoom_.on_window(here, static_cast<double>(i));
+        t.refreshes.push_back(seconds_since(r0));
+      }
+    }
+    pf_->predict(d.steps[i].odometry);
+    pf_->update(d.scans[i], d.compass[i]);
     t.updates.push_back(seconds_since(t0));
-    t.segments.push_back(window.segment_count());
-    const Pose e = pf.estimate().pose, truth = d.steps[i].truth;
+    t.segments.push_back(use_zoom_ ? window_.segment_count() : map_.segment_count());
+    const Pose e = pf_->estimate().pose, truth = d.steps[i].truth;
     t.sq_error += std::pow(e.x - truth.x, 2) + std::pow(e.y - truth.y, 2), ++t.n;
   }
-  return t;
+
+  Timing t;
+
+ private:
+  Map window_at(Point c) const { return clip_map(map_, window_rect(map_.border, c, s_.window, s_.window)); }
+
+  const Map& map_;
+  const Settings& s_;
+  CasterFactory caster_;
+  ZoomMap zoom_;
+  bool use_zoom_;
+  Map window_;
+  std::unique_ptr<ParticleFilter> pf_;
+};
+
+// Both filters in lockstep, in alternating order, so that whatever else runs on the
+// machine weighs on both columns alike.
+std::pair<Timing, Timing> run_pair(const Map& map, const Drive& d, const Settings& s, size_t particles,
+                                   const CasterFactory& caster, uint64_t seed) {
+  Tracker whole(map, d, s, particles, caster, seed, false), zoom(map, d, s, particles, caster, seed, true);
+  for (size_t i = 0; i < d.steps.size(); ++i) {
+    if (i % 2 == 0) whole.step(d, i), zoom.step(d, i);
+    else zoom.step(d, i), whole.step(d, i);
+  }
+  return {whole.t, zoom.t};
 }
 
 void report(const char* caster, size_t particles, const Timing& whole, const Timing& zoom) {
@@ -211,8 +250,11 @@ int main(int argc, char** argv) {
   app.add_option("--particles", s.particles, "NP with the fast caster")->capture_default_str();
   app.add_option("--seed-particles", s.seed_particles, "NP with the seed's bounding-circle caster")->capture_default_str();
   app.add_option("--threads", s.threads, "filter threads")->capture_default_str()->check(CLI::PositiveNumber);
-  app.add_flag("--skip-seed", s.skip_seed, "time the fast caster only");
+  app.add_option("--brute-particles", s.brute_particles, "NP with the every-segment caster (0: skip it)")
+      ->capture_default_str();
+  app.add_flag("--skip-seed", s.skip_seed, "skip the seed's bounding-circle caster");
   CLI11_PARSE(app, argc, argv);
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // a table line as soon as it is known, also into a pipe
   const Map map = is_amrl_path(s.map) ? read_amrl_file(s.map, AmrlOptions{}) : read_seed_file(s.map);
   const RayCasterOptions laser{0.3, 15.0};
   std::shared_ptr<const RayCaster> world = std::make_shared<GridRayCaster>(map, laser);
@@ -230,11 +272,17 @@ int main(int argc, char** argv) {
                 d.start.y);
     std::printf("  %-28s %-11s %12s %12s %6s %12s %11s %9s %10s\n", "ray caster", "map", "median upd", "mean upd",
                 "refr.", "median refr", "total", "segments", "RMS error");
-    report("GridRayCaster (the robot's)", s.particles, run_whole(map, d, s, s.particles, fast, rs + 5),
-           run_zoom(map, d, s, s.particles, fast, rs + 5));
-    if (!s.skip_seed)
-      report("SeedRayCaster (the seed's)", s.seed_particles, run_whole(map, d, s, s.seed_particles, seed, rs + 5),
-             run_zoom(map, d, s, s.seed_particles, seed, rs + 5));
+    const auto [fw, fz] = run_pair(map, d, s, s.particles, fast, rs + 5);
+    report("GridRayCaster (the robot's)", s.particles, fw, fz);
+    if (!s.skip_seed) {
+      const auto [sw, sz] = run_pair(map, d, s, s.seed_particles, seed, rs + 5);
+      report("SeedRayCaster (the seed's)", s.seed_particles, sw, sz);
+    }
+    if (s.brute_particles > 0) {
+      const CasterFactory brute = [&](const Map& m) { return std::make_shared<BruteRayCaster>(m, laser); };
+      const auto [bw, bz] = run_pair(map, d, s, s.brute_particles, brute, rs + 5);
+      report("every segment (no index)", s.brute_particles, bw, bz);
+    }
   }
   return 0;
 }
