@@ -6,40 +6,12 @@
 
 #include "protocol/connection.h"
 #include "protocol/sql_util.h"
+#include "protocol/wkb.h"
 
 namespace fleetmap {
 namespace {
 
 constexpr const char* kLive = "(expires_at IS NULL OR expires_at > NOW(6))";  // as protocol/scene_store.cpp
-
-// ST_AsBinary(polygon): byte order, type 3, ring count, then the first ring's points as
-// doubles; exact, unlike ST_AsText. The same reading as protocol/scene_store.cpp's.
-Polygon polygon_from_wkb(const mysqlpp::String& s) {
-  const char* b = s.data();
-  const size_t len = s.length();
-  size_t at = 1;
-  auto take = [&](void* v, size_t n) {
-    if (at + n > len) throw DbError("truncated polygon from the database");
-    std::memcpy(v, b + at, n);
-    at += n;
-  };
-  auto u32 = [&] {
-    uint32_t v;
-    take(&v, 4);
-    return v;
-  };
-  if (len < 1 || b[0] != 1) throw DbError("expected a little-endian WKB polygon from the database");
-  if (u32() != 3 || u32() < 1) throw DbError("expected a WKB polygon from the database");
-  const uint32_t points = u32();
-  Polygon ring;
-  for (uint32_t i = 0; i < points; ++i) {
-    double xy[2];
-    take(xy, 16);
-    ring.push_back({xy[0], xy[1]});
-  }
-  if (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
-  return ring;
-}
 
 }  // namespace
 
@@ -57,7 +29,7 @@ std::string live_scene_version(mysqlpp::Connection& c, unsigned map_id) {
   return r.empty() ? std::string() : sql::to_string(r[0][0]);
 }
 
-Scene load_live_scene(mysqlpp::Connection& c, unsigned map_id) {
+Scene read_scene(mysqlpp::Connection& c, unsigned map_id, SceneObjects which) {
   const std::string mid = std::to_string(map_id);
   Scene s;
   mysqlpp::Query q = c.query("SELECT ST_AsBinary(bounds) FROM map_bounds WHERE map_id = " + mid);
@@ -65,8 +37,8 @@ Scene load_live_scene(mysqlpp::Connection& c, unsigned map_id) {
 
   std::unordered_map<unsigned long long, size_t> index;  // env_objects.id -> position in s.objects
   q.reset();
-  q << "SELECT id, object_key, tag, dynamic FROM env_objects WHERE map_id = " << mid << " AND " << kLive
-    << " ORDER BY id";
+  q << "SELECT id, object_key, tag, dynamic FROM env_objects WHERE map_id = " << mid << " AND "
+    << (which == SceneObjects::Live ? kLive : "source = 'imported'") << " ORDER BY id";
   for (const mysqlpp::Row& r : q.store()) {
     EnvObject o;
     o.id = sql::to_string(r[1]);
@@ -81,7 +53,7 @@ Scene load_live_scene(mysqlpp::Connection& c, unsigned map_id) {
       << " ORDER BY object_id, ord";
     for (const mysqlpp::Row& r : q.store()) {
       auto it = index.find(sql::to_uint(r[0]));
-      if (it == index.end()) continue;  // an observation that expired between the two reads
+      if (it == index.end()) continue;  // an observation's (or one that expired between the two reads)
       Element e;
       e.footprint = polygon_from_wkb(r[1]);
       if (!r[2].is_null()) e.z = HeightRange{sql::to_double(r[2]), sql::to_double(r[3])};

@@ -23,9 +23,17 @@ namespace fleetmap {
 // on map_id) and two small lookups.
 std::string live_scene_version(mysqlpp::Connection& c, unsigned map_id);
 
-// The map's live objects (imported ones and observations with expires_at in the future,
-// in id order), its avoided areas (in id order, as SceneStore::load) and bounds. An
-// unknown map id gives an empty scene.
-Scene load_live_scene(mysqlpp::Connection& c, unsigned map_id);
+enum class SceneObjects {
+  Imported,  // what an import wrote (SceneStore::load, exports)
+  Live,      // imported ones and observations with expires_at in the future
+};
+
+// The map's objects of that kind (in id order), its avoided areas (in id order) and
+// bounds, read in the caller's transaction. An unknown map id gives an empty scene.
+Scene read_scene(mysqlpp::Connection& c, unsigned map_id, SceneObjects which);
+
+inline Scene load_live_scene(mysqlpp::Connection& c, unsigned map_id) {
+  return read_scene(c, map_id, SceneObjects::Live);
+}
 
 }  // namespace fleetmap

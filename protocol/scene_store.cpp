@@ -12,13 +12,15 @@
 #include "common/number_format.h"
 #include "common/polygon.h"
 #include "protocol/connection.h"
+#include "protocol/batch_insert.h"
+#include "protocol/live_scene.h"
 #include "protocol/map_store.h"
 #include "protocol/sql_util.h"
+#include "protocol/wkb.h"
 
 namespace fleetmap {
 namespace {
 
-constexpr size_t kBatchRows = 1000;     // rows per multi-row INSERT
 constexpr double kFirstBoxHalf = 1.0;   // near(): half side of the first search box (m)
 constexpr const char* kLive = "(o.expires_at IS NULL OR o.expires_at > NOW(6))";
 constexpr const char* kIndex = "sx_object_elements_footprint";
@@ -28,39 +30,6 @@ std::string point_sql(Point p) { return "POINT(" + n(p.x) + "," + n(p.y) + ")"; 
 std::string geom_sql(const Polygon& ring) { return "ST_GeomFromText('" + polygon_to_wkt(ring) + "')"; }
 std::string box_sql(Point p, double h) {
   return geom_sql({{p.x - h, p.y - h}, {p.x + h, p.y - h}, {p.x + h, p.y + h}, {p.x - h, p.y + h}});
-}
-
-// ST_AsBinary(polygon): byte order, type 3, rings, then per ring its points as doubles.
-// The first ring, without its closing vertex; exact, unlike ST_AsText.
-Polygon polygon_from_wkb(const mysqlpp::String& s) {
-  const char* b = s.data();
-  const size_t len = s.length();
-  size_t at = 0;
-  auto u32 = [&] {
-    if (at + 4 > len) throw DbError("truncated polygon from the database");
-    uint32_t v;
-    std::memcpy(&v, b + at, 4);
-    at += 4;
-    return v;
-  };
-  auto f64 = [&] {
-    if (at + 8 > len) throw DbError("truncated polygon from the database");
-    double v;
-    std::memcpy(&v, b + at, 8);
-    at += 8;
-    return v;
-  };
-  if (len < 1 || b[0] != 1) throw DbError("expected a little-endian WKB polygon from the database");
-  at = 1;
-  if (u32() != 3 || u32() < 1) throw DbError("expected a WKB polygon from the database");
-  const uint32_t points = u32();
-  Polygon ring;
-  for (uint32_t i = 0; i < points; ++i) {
-    const double x = f64();
-    ring.push_back({x, f64()});
-  }
-  if (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
-  return ring;
 }
 
 // The first bytes of s, at most n, without cutting a UTF-8 character: the column would
@@ -106,41 +75,14 @@ void check_scene(const Scene& scene) {
   if (scene.bounds) check_polygon(*scene.bounds, "bounds");
 }
 
-// Collects rows of one multi-row INSERT and runs it every kBatchRows rows and at the end.
-class BatchInsert {
- public:
-  BatchInsert(mysqlpp::Connection& c, std::string head) : q_(c.query()), head_(std::move(head)) {}
-  mysqlpp::Query& row() {
-    if (rows_++ == 0) {
-      q_.reset();
-      q_ << head_;
-    } else {
-      q_ << ",";
-    }
-    return q_;
-  }
-  void end_row() {
-    if (rows_ == kBatchRows) flush();
-  }
-  void flush() {
-    if (rows_ == 0) return;
-    q_.execute();
-    rows_ = 0;
-  }
-
- private:
-  mysqlpp::Query q_;
-  std::string head_;
-  size_t rows_ = 0;
-};
 
 // The first stored key among `keys` in table/column of the map, if any.
 std::optional<std::string> first_existing(mysqlpp::Connection& c, const char* table, const char* column,
                                           const std::string& mid, const std::vector<std::string>& keys) {
-  for (size_t k = 0; k < keys.size(); k += kBatchRows) {
+  for (size_t k = 0; k < keys.size(); k += BatchInsert::kRows) {
     mysqlpp::Query q = c.query();
     q << "SELECT " << column << " FROM " << table << " WHERE map_id = " << mid << " AND " << column << " IN (";
-    for (size_t i = k; i < std::min(keys.size(), k + kBatchRows); ++i) q << (i > k ? "," : "") << mysqlpp::quote << keys[i];
+    for (size_t i = k; i < std::min(keys.size(), k + BatchInsert::kRows); ++i) q << (i > k ? "," : "") << mysqlpp::quote << keys[i];
     q << ") ORDER BY " << column << " LIMIT 1";
     mysqlpp::StoreQueryResult r = q.store();
     if (!r.empty()) return sql::to_string(r[0][0]);
@@ -392,35 +334,7 @@ Scene SceneStore::load(const std::string& map) {
   // One snapshot for every read below: a concurrent import is seen entirely or not at all.
   execute(c_, "SET TRANSACTION ISOLATION LEVEL REPEATABLE READ, READ ONLY");
   Transaction tx(c_);
-  const std::string mid = std::to_string(map_id(map));
-  Scene s;
-  mysqlpp::Query q = c_.query("SELECT ST_AsBinary(bounds) FROM map_bounds WHERE map_id = " + mid);
-  for (const mysqlpp::Row& r : q.store()) s.bounds = polygon_from_wkb(r[0]);
-
-  std::unordered_map<unsigned long long, size_t> index;  // env_objects.id -> position in s.objects
-  q.reset();
-  q << "SELECT id, object_key, tag, dynamic FROM env_objects WHERE source = 'imported' AND map_id = " << mid << " ORDER BY id";
-  for (const mysqlpp::Row& r : q.store()) {
-    EnvObject o;
-    o.id = sql::to_string(r[1]);
-    o.tag = sql::to_string(r[2]);
-    o.dynamic = sql::to_int(r[3]) != 0;
-    index.emplace(sql::to_uint(r[0]), s.objects.size());
-    s.objects.push_back(std::move(o));
-  }
-  q.reset();
-  q << "SELECT object_id, ST_AsBinary(footprint), zmin, zmax FROM object_elements WHERE map_id = " << mid
-    << " ORDER BY object_id, ord";
-  mysqlpp::UseQueryResult res = q.use();
-  while (mysqlpp::Row r = res.fetch_row()) {
-    auto it = index.find(sql::to_uint(r[0]));
-    if (it == index.end()) continue;  // an observed object's
-    Element e;
-    e.footprint = polygon_from_wkb(r[1]);
-    if (!r[2].is_null()) e.z = HeightRange{sql::to_double(r[2]), sql::to_double(r[3])};
-    s.objects[it->second].elements.push_back(std::move(e));
-  }
-  s.avoided = avoided_areas(map);
+  Scene s = read_scene(c_, map_id(map), SceneObjects::Imported);
   tx.commit();
   return s;
 }

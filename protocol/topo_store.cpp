@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "common/number_format.h"
+#include "protocol/batch_insert.h"
 #include "protocol/connection.h"
 #include "protocol/map_store.h"
 #include "protocol/sql_util.h"
@@ -11,7 +12,6 @@
 namespace fleetmap {
 namespace {
 
-constexpr size_t kBatchRows = 1000;  // rows per multi-row INSERT
 
 std::string n(double v) { return format_number(v); }
 
@@ -36,34 +36,6 @@ TopoInfo info_from_row(const mysqlpp::Row& r) {
   return i;
 }
 
-// Runs the INSERT built in q once it holds kBatchRows rows, and at the end.
-class BatchInsert {
- public:
-  BatchInsert(mysqlpp::Query& q, std::string head) : q_(q), head_(std::move(head)) {}
-  mysqlpp::Query& row() {
-    if (rows_ == 0) {
-      q_.reset();
-      q_ << head_;
-    } else {
-      q_ << ",";
-    }
-    ++rows_;
-    return q_;
-  }
-  void end_row() {
-    if (rows_ == kBatchRows) flush();
-  }
-  void flush() {
-    if (rows_ == 0) return;
-    q_.execute();
-    rows_ = 0;
-  }
-
- private:
-  mysqlpp::Query& q_;
-  std::string head_;
-  size_t rows_ = 0;
-};
 
 }  // namespace
 
@@ -96,7 +68,7 @@ void TopoStore::import(const std::string& map, const TopoGraph& g, const std::st
     << source.substr(0, 255) << ", " << g.nodes().size() << ", " << g.edges().size() << ")";
   q.execute();
 
-  BatchInsert nodes(q, "INSERT INTO topo_nodes (map_id, map, node_id, ord, name, x, y, pos) VALUES ");
+  BatchInsert nodes(c_, "INSERT INTO topo_nodes (map_id, map, node_id, ord, name, x, y, pos) VALUES ");
   for (size_t k = 0; k < g.nodes().size(); ++k) {
     const TopoNode& node = g.nodes()[k];
     mysqlpp::Query& r = nodes.row();
@@ -108,7 +80,7 @@ void TopoStore::import(const std::string& map, const TopoGraph& g, const std::st
   }
   nodes.flush();
 
-  BatchInsert edges(q,
+  BatchInsert edges(c_,
                     "INSERT INTO topo_edges (map_id, map, ord, s0_id, s1_id, type, has_door, has_automated_door, "
                     "max_clearance, max_speed, length, geom) VALUES ");
   for (size_t k = 0; k < g.edges().size(); ++k) {
