@@ -1,5 +1,6 @@
 #include "server/nav2_command.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -18,13 +19,10 @@
 namespace fleetmap {
 namespace {
 
-// The robot's laser height from its profile; NULL: the default. Throws RobotNotFound.
+// The robot's laser height from its profile (robots.laser_height); none set: the
+// default. Throws RobotNotFound.
 double robot_laser_height(mysqlpp::Connection& c, const std::string& robot) {
-  mysqlpp::Query q = c.query();
-  q << "SELECT laser_height FROM robots WHERE db_user = " << mysqlpp::quote << robot << " AND removed_at IS NULL";
-  const mysqlpp::StoreQueryResult r = q.store();
-  if (r.empty()) throw RobotNotFound(robot);
-  return r[0][0].is_null() ? kDefaultLaserHeight : static_cast<double>(r[0][0]);
+  return FleetStore(c).profile(robot).laser_height.value_or(kDefaultLaserHeight);
 }
 
 std::string file_name(const std::string& path) {
