@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The main job, end to end on a private MariaDB: start it, import the real maps, start
 # the map server and three simulated robots on the GDC1 building floor, give them goals,
-# watch them live, abort one task on the way, and end with a summary and a picture of
-# the map with the robots' trajectories (out/demo-GDC1.svg). The database stays up for
+# watch them live, abort one task on the way; then the semantic layer on the example room
+# (objects, slices at two laser heights, Nav2 files, a goal by meaning); and end with a
+# summary and a picture of the map with the robots' trajectories (out/demo-GDC1.svg). The database stays up for
 # exploring afterwards:
 #   scripts/db.sh sql        # administrator
 #   scripts/db.sh stop
@@ -97,8 +98,25 @@ for i in $(seq 1 $((TIMEOUT / 3))); do
   [ "$open" = 0 ] && break
 done
 
+step "the semantic layer (example room): objects, nearest chairs, what two laser heights see, a goal by meaning"
+"$FM" map import maps/example-room.map --name room --replace >/dev/null
+"$FM" tags import maps/example-room.tags.json >/dev/null
+"$FM" objects import room maps/example-room.geojson --replace
+echo "-- the chairs nearest (7.5, 1.5), by distance to their footprints:"
+"$FM" objects near room 7.5 1.5 --tag chair -k 2
+echo "-- the map a laser sees at 0.381 m and at 0.794 m (chair legs vs backrests, boxes, table top...):"
+for h in 0.381 0.794; do "$FM" map slice room --height "$h" -o "out/room-slice-$h.map"; done
+"$FM" map nav2 room --laser-height 0.381 -o out/room-0.381 >/dev/null
+echo "-- Nav2 map and keep-out mask for a 0.381 m laser: out/room-0.381.pgm/.yaml, out/room-0.381_keepout.pgm/.yaml"
+echo "-- a goal by meaning: robot r4 (laser 0.381 m, radius 0.25 m, 0.6 m tall) at the door, to the charging station:"
+"$FM" robot remove r4 >/dev/null 2>&1 || true
+"$FM" robot add r4 --map room --laser-height 0.381 --radius 0.25 --height 0.6 --password-out "$FLEETMAP_HOME/robots/r4.pw" | head -n 1
+"$FM" pose-ini r4 7.5 1.5 1.57 >/dev/null
+"$FM" goal r4 --near charging_station
+"$FM" tasks --robot r4 --limit 1
+
 step "summary"
-"$FM" tasks --limit 3
+"$FM" tasks --limit 4
 "$FM" map export GDC1 --format svg --trajectories --since "$STARTED" -o out/demo-GDC1.svg
 for r in r1 r2 r3; do
   echo "  $r: $("$FM" trajectory "$r" --since "$STARTED" | tail -n +2 | wc -l) poses reported; log out/demo-$r.log"
