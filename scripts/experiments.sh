@@ -8,7 +8,7 @@
 # experiment-slices runs twice: with the seed's sensor model (eq. 4-6) and with the
 # robot's (robust: beam product with a floor, tempering); experiment-zoom twice: a 40 m
 # window refreshed at 10 m and the seed's proportions (a window of 10 % of the
-# area, new at 40 % of its side). About 11 minutes on two cores. Environment: FLEETMAP_BUILD_DIR
+# area, new at 40 % of its side). 10-12 minutes on two cores. Environment: FLEETMAP_BUILD_DIR
 # (default build), SLICES_ARGS and ZOOM_ARGS (extra flags, e.g. SLICES_ARGS="--runs 20").
 set -euo pipefail
 cd "$(dirname "$0")/.."
