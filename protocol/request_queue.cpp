@@ -83,9 +83,4 @@ void RequestQueue::remove(const std::vector<unsigned long long>& ids) {
   q.execute();
 }
 
-size_t RequestQueue::waiting() {
-  mysqlpp::Query q = c_.query("SELECT COUNT(*) FROM rr");
-  return static_cast<size_t>(sql::to_uint(q.store()[0][0]));
-}
-
 }  // namespace fleetmap

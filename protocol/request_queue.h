@@ -43,7 +43,6 @@ class RequestQueue {
 
   unsigned long long insert(const Answer& a);  // the sa.id
   void remove(const std::vector<unsigned long long>& request_ids);
-  size_t waiting();                             // rows in rr
 
  private:
   mysqlpp::Connection& c_;

@@ -77,7 +77,6 @@ std::vector<std::string> WriteBatch::statements() {
     for (size_t i = 0; i < removed_.size(); ++i) s += (i ? "," : "") + std::to_string(removed_[i]);
     out.push_back(s + ")");
   }
-  answers_written_ += answers_.size();
   answers_.clear();
   poses_.clear();
   fixes_.clear();

@@ -57,7 +57,6 @@ class WriteBatch {
   // Sends what is pending; with commit, the COMMIT goes in the same round trip. A
   // failing statement stops the rest (so no COMMIT) and throws mysqlpp::BadQuery.
   void flush(bool commit);
-  size_t answers_written() const { return answers_written_; }
 
  private:
   std::vector<std::string> statements();
@@ -69,7 +68,6 @@ class WriteBatch {
   std::vector<GpsReport> fixes_;
   std::vector<std::string> robot_updates_;
   std::vector<unsigned long long> removed_;
-  size_t answers_written_ = 0;
 };
 
 }  // namespace fleetmap

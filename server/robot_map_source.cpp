@@ -4,6 +4,7 @@
 
 #include "common/map_slice.h"
 #include "common/map_window.h"
+#include "common/polygon.h"
 #include "common/scene_laser.h"
 #include "protocol/live_scene.h"
 
@@ -22,17 +23,6 @@ Rect box_of(const std::vector<Segment>& segments) {
       b.xmax = std::max(b.xmax, p.x);
       b.ymax = std::max(b.ymax, p.y);
     }
-  return b;
-}
-
-Rect box_of(const Polygon& ring) {
-  Rect b{ring.front().x, ring.front().y, ring.front().x, ring.front().y};
-  for (Point p : ring) {
-    b.xmin = std::min(b.xmin, p.x);
-    b.ymin = std::min(b.ymin, p.y);
-    b.xmax = std::max(b.xmax, p.x);
-    b.ymax = std::max(b.ymax, p.y);
-  }
   return b;
 }
 
@@ -153,10 +143,10 @@ Scene scene_in_window(const Scene& scene, const Rect& r) {
   out.bounds = scene.bounds;
   for (const EnvObject& o : scene.objects)
     if (std::any_of(o.elements.begin(), o.elements.end(),
-                    [&](const Element& e) { return !e.footprint.empty() && meet(box_of(e.footprint), r); }))
+                    [&](const Element& e) { return !e.footprint.empty() && meet(polygon_bounds(e.footprint), r); }))
       out.objects.push_back(o);
   for (const AvoidedArea& a : scene.avoided)
-    if (!a.area.empty() && meet(box_of(a.area), r)) out.avoided.push_back(a);
+    if (!a.area.empty() && meet(polygon_bounds(a.area), r)) out.avoided.push_back(a);
   return out;
 }
 

@@ -43,16 +43,8 @@ double elapsed_s(Clock::time_point since) { return std::chrono::duration<double>
 // outlives the test: the destructor SIGKILLs what is still running.
 class Daemon {
  public:
-  Daemon(const std::string& flags, const std::string& log_name) : log_path_(temp_path(log_name)) {
-    const std::string cmd = "exec " + std::string(FLEETMAP_BIN_DIR) + "/fleetmap-server --log-level debug " + flags +
-                            " >>" + log_path_ + " 2>&1";
-    pid_ = fork();
-    if (pid_ == 0) {
-      execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-      _exit(127);
-    }
-    if (pid_ < 0) throw std::runtime_error("fork failed");
-  }
+  Daemon(const std::string& flags, const std::string& log_name)
+      : log_path_(temp_path(log_name)), pid_(spawn_server(flags, log_path_)) {}
   ~Daemon() {
     if (pid_ > 0) {
       ::kill(pid_, SIGKILL);
@@ -83,8 +75,8 @@ class Daemon {
   Daemon& operator=(const Daemon&) = delete;
 
  private:
+  std::string log_path_;  // before pid_: the constructor starts the process with it
   pid_t pid_ = -1;
-  std::string log_path_;
 };
 
 // Logs are appended to (ServerProcess, Daemon): start each test with an empty one.

@@ -12,16 +12,20 @@
 
 namespace fleetmap::test {
 
-ServerProcess::ServerProcess(const std::string& flags, const std::string& log_name) : log_path_(temp_path(log_name)) {
+pid_t spawn_server(const std::string& flags, const std::string& log_path) {
   const std::string cmd = "exec " + std::string(FLEETMAP_BIN_DIR) + "/fleetmap-server --log-level debug " + flags +
-                          " >>" + log_path_ + " 2>&1";
-  pid_ = fork();
-  if (pid_ == 0) {
+                          " >>" + log_path + " 2>&1";
+  const pid_t pid = fork();
+  if (pid == 0) {
     execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
     _exit(127);
   }
-  if (pid_ < 0) throw std::runtime_error("fork failed");
+  if (pid < 0) throw std::runtime_error("fork failed");
+  return pid;
 }
+
+ServerProcess::ServerProcess(const std::string& flags, const std::string& log_name)
+    : log_path_(temp_path(log_name)), pid_(spawn_server(flags, log_path_)) {}
 
 ServerProcess::~ServerProcess() {
   if (pid_ > 0) terminate();

@@ -15,6 +15,10 @@
 
 namespace fleetmap::test {
 
+// Forks build/bin/fleetmap-server --log-level debug FLAGS, its output appended to
+// log_path; returns the child's pid.
+pid_t spawn_server(const std::string& flags, const std::string& log_path);
+
 class ServerProcess {
  public:
   // Starts build/bin/fleetmap-server with extra flags; its log goes to a scratch file.
@@ -28,8 +32,8 @@ class ServerProcess {
   ServerProcess& operator=(const ServerProcess&) = delete;
 
  private:
+  std::string log_path_;  // before pid_: the constructor starts the process with it
   pid_t pid_ = -1;
-  std::string log_path_;
 };
 
 // Creates (or re-creates) a robot account on map via the real CLI; returns its password.
