@@ -98,6 +98,11 @@ int main(int argc, char** argv) {
   app.add_option("--seed", s.seed, "seed of every random draw")->capture_default_str();
   app.add_option("--particles", s.filter.particles, "NP")->capture_default_str();
   app.add_option("--updates", s.updates, "updates allowed to converge")->capture_default_str();
+  app.add_option("--look-around", s.look_around,
+                 "global localization: first steps turning in place (0: wander from the first scan)")
+      ->capture_default_str();
+  double turn_deg = 60;
+  app.add_option("--look-around-turn", turn_deg, "degrees turned per look-around step")->capture_default_str();
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_option("--threads", s.filter.threads, "filter threads")->capture_default_str();
@@ -119,6 +124,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "--config: expected seed, robust, search or all, got %s\n", c.c_str());
       return 2;
     }
+  s.look_around_turn = deg2rad(turn_deg);
   if (maps.empty()) maps = {"maps/amrl/GDC1.vectormap.txt", "maps/amrl/UT_Campus.vectormap.txt"};
   for (const std::string& m : maps) bench_map(m, s, configs, skip_global, skip_tracking, skip_rate);
   return 0;

@@ -26,11 +26,12 @@ extern "C" void on_signal(int) { g_stop = true; }
 // --trials: the report of bench-localization through the same runner, with the robot's
 // laser and particle count. Returns the exit code.
 int run_trials(int trials, std::vector<std::string> maps, const std::string& presets, bool skip_tracking,
-               const fleetmap::SimRobotOptions& o) {
+               int look_around, const fleetmap::SimRobotOptions& o) {
   namespace loc = fleetmap::localization;
   loc::TrialSettings s;
   s.trials = trials;
   s.updates = 10;  // the criterion: within 10 updates
+  s.look_around = look_around;
   s.seed = o.seed;
   s.laser = o.laser;
   s.filter.particles = o.global_particles;
@@ -115,6 +116,10 @@ int main(int argc, char** argv) {
   app.add_option("--presets", presets, "filter presets for --trials, comma-separated: seed (the baseline), robust, "
                                        "search (the robot's)")->capture_default_str();
   app.add_flag("--skip-tracking", skip_tracking, "--trials: global localization only");
+  int look_around = fleetmap::localization::TrialSettings{}.look_around;
+  app.add_option("--look-around", look_around,
+                 "--trials: scans turning 60 degrees in place before wandering (0: wander from the first)")
+      ->capture_default_str();
   app.footer("Exit codes: 0 ok, 1 failure (database, server), 2 bad input, 5 localization failed, 64 usage.");
   try {
     app.parse(argc, argv);
@@ -122,7 +127,7 @@ int main(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 64;
   }
-  if (trials > 0) return run_trials(trials, map_files, presets, skip_tracking, o);
+  if (trials > 0) return run_trials(trials, map_files, presets, skip_tracking, look_around, o);
   if (start.size() != 3) {
     std::cerr << "--start X Y THETA is required (or --trials N)\n";
     return 64;

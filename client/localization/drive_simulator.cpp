@@ -22,6 +22,11 @@ bool WanderDriver::clear(double heading) const {
 }
 
 DriveStep WanderDriver::step() {
+  if (steps_++ < options_.look_around_steps) {
+    const Pose before = pose_;
+    pose_ = compose(pose_, {0, 0, options_.look_around_turn});
+    return {pose_, odometry_.sample(between(before, pose_), rng_), 0.0};
+  }
   std::normal_distribution<double> jitter(0.0, options_.max_turn / 3);
   wander_ = std::clamp(wander_ + jitter(rng_), -options_.max_turn, options_.max_turn);
   double turn = wander_, forward = options_.step;

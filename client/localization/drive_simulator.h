@@ -22,6 +22,10 @@ struct DriveOptions {
   double lookahead = 1.5;              // metres of clear way wanted ahead
   double robot_radius = 0.3;           // metres
   MotionNoise odometry{0.005, 0.0005, 0.0025, 0.0005};  // of the reported odometry
+  // Global localization's look around: the first look_around_steps steps turn in place
+  // by look_around_turn each, so that the laser (180 degrees) sees behind the robot too.
+  int look_around_steps = 0;
+  double look_around_turn = deg2rad(60.0);
 };
 
 struct DriveStep {
@@ -45,6 +49,7 @@ class WanderDriver {
   MotionModel odometry_;
   Pose pose_;
   double wander_ = 0;  // current turn per step, radians
+  int steps_ = 0;
   std::mt19937_64 rng_;
 };
 

@@ -62,6 +62,8 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
     LaserSimulator laser(world, s.laser, rng());
     DriveOptions drive;
     drive.step = s.global_step;
+    drive.look_around_steps = s.look_around;
+    drive.look_around_turn = s.look_around_turn;
     WanderDriver driver(world, start, drive, rng());
     Pose truth = start;
     pf.init_global(compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
@@ -180,10 +182,12 @@ void report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
     char setup[64] = "";
     if (f.global_search) std::snprintf(setup, sizeof setup, " + %.2f s once per map (field)", g.setup_seconds);
     std::fprintf(out,
-                 "global localization, %d trials (%d people/scan): %.1f %% within 0.3 m and 3 deg after <= %d updates "
+                 "global localization, %d trials (%d people/scan; %d turns of %.0f deg in place, then %.2g m steps): "
+                 "%.1f %% within 0.3 m and 3 deg after <= %d updates "
                  "(goal >= 95 %%); first within at update median %.0f, p90 %.0f; final error median %.2f m; "
                  "%.2f s per localization (%d updates)%s\n",
-                 g.trials, s.laser.people, 100.0 * g.converged / std::max(1, g.trials), s.updates,
+                 g.trials, s.laser.people, s.look_around, rad2deg(s.look_around_turn), s.global_step,
+                 100.0 * g.converged / std::max(1, g.trials), s.updates,
                  percentile(g.first_within, 0.5), percentile(g.first_within, 0.9),
                  errs.empty() ? NAN : errs[errs.size() / 2], g.seconds / std::max(1, g.trials), s.updates,
                  setup);

@@ -4,7 +4,7 @@
 //
 //  1. global localization: from a compass-only prior, the share of trials whose estimate
 //     is within 0.3 m and 3 degrees after at most `updates` updates and stays so to the
-//     last (the robot wandering global_step metres between scans); start poses in free
+//     last (the robot looking around, then wandering global_step metres between scans); start poses in free
 //     space with at least min_hit_fraction of the beams hitting a wall;
 //  2. tracking: RMS and maximum error along a `drive`-metre wander (a scan every 0.25 m,
 //     odometry noise), beside dead reckoning from the same odometry (the baseline).
@@ -30,6 +30,10 @@ struct TrialSettings {
   int trials = 100;
   int updates = 10;
   double global_step = 0.5;  // metres between scans during global localization
+  // Global localization starts with a look around, as SimRobot's does: the first
+  // look_around steps turn in place by look_around_turn (0: wander from the start).
+  int look_around = 6;
+  double look_around_turn = deg2rad(60.0);
   double drive = 200;        // metres of the tracking drive
   double min_hit_fraction = 0.5;
   double compass_sd = deg2rad(1.0);  // the compass's own error (clamped to +-3 degrees)

@@ -10,6 +10,7 @@
 
 #include "client/localization/parallel.h"
 #include "client/localization/stitched_scan.h"
+#include "client/localization/turn_registration.h"
 #include "common/sweep_ray_caster.h"
 
 namespace fleetmap::localization {
@@ -112,8 +113,29 @@ void ParticleFilter::init_global(std::optional<double> compass) {
   global_phase_ = options_.global_search && compass;
   init_compass_ = compass;
   searches_ = 0;
+  looking_around_ = true;
   since_scan_ = {};
   history_.clear();
+}
+
+Odometry ParticleFilter::stitching_step(const Scan& before, const Scan& after) const {
+  Odometry u = after.since_previous;
+  const OdometryDecomposition d = motion_.decompose(u);
+  double turn = u.dtheta, var = std::max(d.sd_rot1 * d.sd_rot1 + d.sd_rot2 * d.sd_rot2, 1e-12);
+  // Odometry's error grows with every turn; two compass readings bound the turn within
+  // the difference of two errors uniform in +-half width (variance 2 hw^2 / 3).
+  if (before.compass && after.compass) {
+    const double hw = compass_.half_width(), var_c = 2 * hw * hw / 3;
+    const double by_compass = angle_diff(*after.compass, *before.compass);
+    turn = normalize_angle(turn + var / (var + var_c) * angle_diff(by_compass, turn));
+    var = var * var_c / (var + var_c);
+  }
+  // A turn in place (a look around): where the two scans overlap they tell it better.
+  if (d.trans < options_.turn_in_place)
+    turn = register_turn(before.ranges, after.ranges, beams_, options_.laser.rmax, turn, std::sqrt(var));
+  // The displacement, small in place, turned with the heading (odometry's frame).
+  u.dtheta = turn;
+  return u;
 }
 
 bool ParticleFilter::reseed_from_search(double compass) {
@@ -126,9 +148,10 @@ bool ParticleFilter::reseed_from_search(double compass) {
   }
   std::vector<const std::vector<double>*> scans;
   std::vector<Odometry> odometry;
-  for (const Scan& h : history_) {
+  for (size_t k = 0; k < history_.size(); ++k) {
+    const Scan& h = history_[k];
     scans.push_back(&h.ranges);
-    odometry.push_back(h.since_previous);
+    odometry.push_back(k > 0 ? stitching_step(history_[k - 1], h) : h.since_previous);
   }
   const StitchedScan stitched = stitch_scans(scans, odometry, beams_, options_.laser.rmax, options_.search_points);
   if (stitched.ranges.empty()) return false;
@@ -162,6 +185,7 @@ bool ParticleFilter::reseed_from_search(double compass) {
   }
   weights_.assign(n, 1.0 / n);
   candidates_ = std::move(found);
+  searched_at_ = at;
   return true;
 }
 
@@ -202,13 +226,18 @@ void ParticleFilter::update(const std::vector<double>& ranges, std::optional<dou
     throw std::invalid_argument("ParticleFilter::update: ranges: expected " + std::to_string(beams_.size()) +
                                 " beams, got " + std::to_string(ranges.size()));
   if (poses_.empty()) throw std::logic_error("ParticleFilter::update: no particles (call init_global or init_pose)");
+  searched_at_.clear();
   if (global_phase_) {
-    history_.push_back({since_scan_, ranges});
-    since_scan_ = {};
-    reseed_from_search(compass.value_or(*init_compass_));
-    if (++searches_ >= std::max<size_t>(1, options_.search_updates)) {
+    // Whether the robot is looking around is known from the motion since the last scan.
+    if (!history_.empty() && motion_.decompose(since_scan_).trans >= options_.turn_in_place) looking_around_ = false;
+    const size_t searches = std::max<size_t>(1, options_.search_updates);
+    if (searches_ >= searches && !looking_around_) {
       global_phase_ = false;
-      history_.clear();
+    } else {
+      history_.push_back({since_scan_, ranges, compass});
+      since_scan_ = {};
+      reseed_from_search(compass.value_or(*init_compass_));
+      if (++searches_ >= searches + options_.look_around_searches) global_phase_ = false;
     }
   }
   const bool use_compass = compass && options_.compass_weight;
@@ -228,8 +257,17 @@ void ParticleFilter::update(const std::vector<double>& ranges, std::optional<dou
       std::vector<double> synthetic(beams_.size());
       for (size_t i = begin; i < end; ++i) {
         const Pose& p = poses_[i];
-        caster.cast_scan(p.point(), p.theta, beams_, synthetic.data());
-        double ll = sensor_.log_weight(ranges.data(), synthetic.data(), beams_.size());
+        double ll = 0;
+        if (searched_at_.empty()) {
+          caster.cast_scan(p.point(), p.theta, beams_, synthetic.data());
+          ll = sensor_.log_weight(ranges.data(), synthetic.data(), beams_.size());
+        }
+        // A fresh cloud from a search has not yet seen the scans before this one.
+        for (size_t k = 0; k < searched_at_.size(); ++k) {
+          const Pose q = compose(p, {searched_at_[k].x, searched_at_[k].y, searched_at_[k].theta});
+          caster.cast_scan(q.point(), q.theta, beams_, synthetic.data());
+          ll += sensor_.log_weight(history_[k].ranges.data(), synthetic.data(), beams_.size());
+        }
         if (use_compass) ll += compass_.log_likelihood(p.theta, *compass);
         log_likelihood_[i] = ll;
       }
@@ -238,6 +276,7 @@ void ParticleFilter::update(const std::vector<double>& ranges, std::optional<dou
   }
   last_phi_ = 1 - budget;
   ++updates_;
+  if (!global_phase_) history_.clear();
 }
 
 double ParticleFilter::weigh(double most) {

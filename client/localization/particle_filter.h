@@ -12,9 +12,12 @@
 //    (sensor_model.h), optionally by the compass term; particles are split over
 //    `threads` threads in fixed chunks.
 //  * global search (off in the seed's options, global_search.h): after init_global with a
-//    compass, the first search_updates updates (1 by default) replace the cloud before
-//    weighing it. The scans so far, stitched into the current robot frame by odometry
-//    (stitched_scan.h), are matched over every 0.1 m of free space and the compass's
+//    compass, the first search_updates updates (1 by default), and up to
+//    look_around_searches more while the robot only turns in place (a look around),
+//    replace the cloud before weighing it on every scan so far. The scans, stitched into
+//    the current robot frame by odometry whose turns are corrected by the compass and,
+//    in place, by the overlap of consecutive scans (stitched_scan.h,
+//    turn_registration.h), are matched over every 0.1 m of free space and the compass's
 //    headings on a likelihood field; the search_candidates best places are ranked again
 //    by this filter's sensor model on cast rays (each scan at its pose: eq. 4-5 see the
 //    walls a likelihood field sees through); the NP particles go around the
@@ -85,8 +88,13 @@ struct ParticleFilterOptions {
   GlobalSearchOptions search;         // its likelihood field; margin and hL set from laser
   size_t search_candidates = 2000;    // places the likelihood field keeps (M)
   size_t search_clusters = 200;       // of those, the best by cast rays that get particles
-  size_t search_updates = 1;          // updates that search (bench: more did not help)
+  size_t search_updates = 1;          // updates that search (bench: more while driving did not help)
+  // Besides, while the robot has only turned in place since init_global (a look around),
+  // up to this many more updates search again with every scan so far: a full turn shows
+  // what one 180 degree scan does not (bench-localization --look-around).
+  size_t look_around_searches = 6;
   size_t search_points = 262;         // at most this many stitched points (2 NL) searched
+  double turn_in_place = 0.05;        // metres: below, a step's turn comes from its scans
   double search_sd_xy = 0.1;          // metres: spread of a cluster (the field's cell)
   double search_sd_theta = deg2rad(0.7);  // radians: about the search's heading step
   bool adaptive = false;              // KLD sampling instead of a fixed NP
@@ -178,6 +186,10 @@ class ParticleFilter {
   // The global phase's cloud from a search on the scans so far; false (cloud kept) when
   // they hit nothing.
   bool reseed_from_search(double compass);
+  // The motion between two scans of the global phase for stitching them: odometry, its
+  // turn corrected by the compass readings and, turning in place, by the scans.
+  struct Scan;
+  Odometry stitching_step(const Scan& before, const Scan& after) const;
   // Weights from log-likelihoods (tempered), resampling and roughening when due; returns
   // the phi applied, at most `most`.
   double weigh(double most);
@@ -194,12 +206,17 @@ class ParticleFilter {
   struct Scan {
     Odometry since_previous;  // odometry from the previous scan to this one
     std::vector<double> ranges;
+    std::optional<double> compass;  // the reading taken with the scan
   };
   bool global_phase_ = false;
   std::optional<double> init_compass_;  // the reading of init_global
   Odometry since_scan_;                 // odometry since the last scan, in the global phase
   std::vector<Scan> history_;           // the global phase's scans, oldest first
+  // After a search, the update weighs the new cloud on every scan of history_ at these
+  // poses relative to the latest (the stitched scan's), not on the latest scan alone.
+  std::vector<Pose> searched_at_;
   size_t searches_ = 0;
+  bool looking_around_ = false;  // only turns in place since init_global
   std::vector<Candidate> candidates_;
   std::vector<Pose> poses_;
   std::vector<double> weights_;  // normalized, sum 1

@@ -41,8 +41,10 @@ double SimRobot::compass() {
 std::optional<int> SimRobot::localize(int max_updates) {
   filter_->init_global(compass());
   for (int i = 1; i <= max_updates; ++i) {
-    // Turn a little in place between scans, as a robot looking around would.
-    const Odometry odo = drive_.step(0, 0.5, 0.2);
+    // Look around: turn 60 degrees in place (at 0.5 rad/s) between scans, so that six
+    // turns show the filter the whole circle (ParticleFilterOptions::look_around_searches).
+    const double turn = loc::deg2rad(60.0), rate = 0.5;
+    const Odometry odo = drive_.step(0, rate, turn / rate);
     filter_->predict(odo);
     filter_->update(laser_.scan(drive_.pose()), compass());
     const loc::PoseEstimate e = filter_->estimate();
