@@ -107,6 +107,8 @@ int main(int argc, char** argv) {
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_option("--threads", s.filter.threads, "filter threads")->capture_default_str();
   app.add_option("--config", config, "seed, robust, search (comma-separated) or all")->capture_default_str();
+  bool per_trial = false;
+  app.add_flag("--per-trial", per_trial, "a line per global trial: start pose, outcome, final error");
   app.add_flag("--skip-global", skip_global);
   app.add_flag("--skip-tracking", skip_tracking);
   app.add_flag("--skip-rate", skip_rate);
@@ -125,6 +127,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   s.look_around_turn = deg2rad(turn_deg);
+  if (per_trial) s.per_trial = stdout;
   if (maps.empty()) maps = {"maps/amrl/GDC1.vectormap.txt", "maps/amrl/UT_Campus.vectormap.txt"};
   for (const std::string& m : maps) bench_map(m, s, configs, skip_global, skip_tracking, skip_rate);
   return 0;

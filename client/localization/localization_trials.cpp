@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "client/localization/drive_simulator.h"
 #include "client/localization/free_space.h"
@@ -89,6 +90,10 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
       res.first_within.push_back(first);
     }
     res.final_error.push_back(err);
+    if (s.per_trial)
+      std::fprintf(s.per_trial, "  trial %d: start (%.2f, %.2f, %.1f deg): %s, final error %.2f m\n", t, start.x,
+                   start.y, rad2deg(start.theta), first > 0 ? ("within from update " + std::to_string(first)).c_str() : "not within",
+                   err);
   }
   res.seconds = seconds_since(t0);
   return res;

@@ -38,6 +38,7 @@ struct TrialSettings {
   double min_hit_fraction = 0.5;
   double compass_sd = deg2rad(1.0);  // the compass's own error (clamped to +-3 degrees)
   uint64_t seed = 1;
+  std::FILE* per_trial = nullptr;  // a line per global trial (start, outcome) when set
 };
 
 struct GlobalResult {

@@ -32,6 +32,31 @@ TEST(WanderDriver, DrivesWithoutTouchingWalls) {
   EXPECT_LT(odo_error, 0.1);  // per 0.25 m step
 }
 
+TEST(WanderDriver, LooksAroundInPlaceBeforeDriving) {
+  const Map m = test::room_map();
+  const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
+  DriveOptions o;
+  o.look_around_steps = 6;
+  o.look_around_turn = deg2rad(60.0);
+  const Pose start{10, 8, 0.4};
+  WanderDriver driver(world, start, o, 3);
+  for (int k = 1; k <= 6; ++k) {
+    const DriveStep s = driver.step();
+    EXPECT_EQ(s.driven, 0.0) << k;
+    EXPECT_DOUBLE_EQ(s.truth.x, start.x);
+    EXPECT_DOUBLE_EQ(s.truth.y, start.y);
+    EXPECT_NEAR(angle_diff(s.truth.theta, start.theta + k * deg2rad(60.0)), 0.0, 1e-9) << k;
+    // Odometry reports the turn with its noise (a few degrees), no drive.
+    EXPECT_NEAR(angle_diff(s.odometry.dtheta, deg2rad(60.0)), 0.0, deg2rad(20.0)) << k;
+    EXPECT_LT(std::hypot(s.odometry.dx, s.odometry.dy), 0.1) << k;
+  }
+  // Back where it started, then it drives.
+  EXPECT_NEAR(angle_diff(driver.pose().theta, start.theta), 0.0, 1e-9);
+  double driven = 0;
+  for (int k = 0; k < 4; ++k) driven += driver.step().driven;
+  EXPECT_GT(driven, 0.0);
+}
+
 TEST(PickStartPose, HasClearanceAndHits) {
   const Map m = test::room_map();
   const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
