@@ -1,6 +1,8 @@
 #pragma once
 // Plane geometry in the map frame (metres): points, rectangles, segment clipping.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace fleetmap {
@@ -27,6 +29,17 @@ struct Rect {
   }
   bool empty() const { return !(xmin < xmax && ymin < ymax); }
   bool contains(Point p) const { return p.x >= xmin && p.x <= xmax && p.y >= ymin && p.y <= ymax; }
+  // A box holding nothing (inverted, it meets nothing); extend() grows it to hold p.
+  static Rect none() {
+    const double inf = std::numeric_limits<double>::infinity();
+    return {inf, inf, -inf, -inf};
+  }
+  void extend(Point p) {
+    xmin = std::min(xmin, p.x);
+    ymin = std::min(ymin, p.y);
+    xmax = std::max(xmax, p.x);
+    ymax = std::max(ymax, p.y);
+  }
   friend bool operator==(const Rect&, const Rect&) = default;
 };
 

@@ -28,6 +28,15 @@ void Obstacle::compute_bound() {
   bound = minimum_bounding_circle(std::move(pts));
 }
 
+Rect Obstacle::box() const {
+  Rect b = Rect::none();
+  for (const Segment& s : segments) {
+    b.extend(s.a);
+    b.extend(s.b);
+  }
+  return b;
+}
+
 size_t Map::segment_count() const {
   size_t n = 0;
   for (const Obstacle& o : obstacles) n += o.segments.size();

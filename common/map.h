@@ -43,6 +43,8 @@ struct Obstacle {
   // Computed once (seed 000 section 4.1); not part of equality, derived from segments.
   Circle bound;
   void compute_bound();
+  // The axis-aligned box of its segments; Rect::none() without segments.
+  Rect box() const;
   friend bool operator==(const Obstacle& l, const Obstacle& r) {
     return l.id == r.id && l.type == r.type && l.semantic == r.semantic && l.segments == r.segments;
   }

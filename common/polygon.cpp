@@ -182,13 +182,8 @@ double polygon_area(const Polygon& ring) {
 
 Rect polygon_bounds(const Polygon& ring) {
   if (ring.empty()) return {};
-  Rect r{ring[0].x, ring[0].y, ring[0].x, ring[0].y};
-  for (Point p : ring) {
-    r.xmin = std::min(r.xmin, p.x);
-    r.ymin = std::min(r.ymin, p.y);
-    r.xmax = std::max(r.xmax, p.x);
-    r.ymax = std::max(r.ymax, p.y);
-  }
+  Rect r = Rect::none();
+  for (Point p : ring) r.extend(p);
   return r;
 }
 

@@ -9,18 +9,6 @@
 namespace fleetmap {
 namespace {
 
-Rect bounds_of(const Obstacle& o) {
-  Rect r{kNoHit, kNoHit, -kNoHit, -kNoHit};
-  for (const Segment& s : o.segments)
-    for (Point p : {s.a, s.b}) {
-      r.xmin = std::min(r.xmin, p.x);
-      r.ymin = std::min(r.ymin, p.y);
-      r.xmax = std::max(r.xmax, p.x);
-      r.ymax = std::max(r.ymax, p.y);
-    }
-  return r;
-}
-
 Rect grow(const Rect& r, const Rect& by) {
   return {std::min(r.xmin, by.xmin), std::min(r.ymin, by.ymin), std::max(r.xmax, by.xmax), std::max(r.ymax, by.ymax)};
 }
@@ -132,7 +120,7 @@ LaserObstacles prepare_laser_obstacles(const Map& map, double laser_height) {
     if (o.segments.empty()) continue;
     LaserObstacles::Entry e;
     if (o.type == ShapeType::Stairs || o.type == ShapeType::Ramp) {
-      SpecialObstacle sp{special_rule(o, laser_height), bounds_of(o)};
+      SpecialObstacle sp{special_rule(o, laser_height), o.box()};
       const bool stops = std::visit([](const auto& r) { return r.can_stop(); }, sp.rule);
       if (!stops) continue;
       e.special = static_cast<int>(out.specials.size());
@@ -150,7 +138,7 @@ LaserObstacles prepare_laser_obstacles(const Map& map, double laser_height) {
       pts.push_back(s.b);
     }
     e.bound = minimum_bounding_circle(std::move(pts));
-    out.bounds = grow(out.bounds, bounds_of(o));
+    out.bounds = grow(out.bounds, o.box());
     out.obstacles.push_back(e);
   }
   return out;

@@ -13,19 +13,6 @@ namespace {
 
 constexpr size_t kMaxEntries = 64;  // (map, height) pairs kept; more are dropped wholesale
 
-Rect box_of(const std::vector<Segment>& segments) {
-  if (segments.empty()) return {0, 0, -1, -1};  // meets nothing
-  Rect b{segments.front().a.x, segments.front().a.y, segments.front().a.x, segments.front().a.y};
-  for (const Segment& s : segments)
-    for (Point p : {s.a, s.b}) {
-      b.xmin = std::min(b.xmin, p.x);
-      b.ymin = std::min(b.ymin, p.y);
-      b.xmax = std::max(b.xmax, p.x);
-      b.ymax = std::max(b.ymax, p.y);
-    }
-  return b;
-}
-
 // Closed boxes: touching counts, so no obstacle that clip_obstacle would keep is skipped.
 bool meet(const Rect& a, const Rect& b) {
   return a.xmin <= b.xmax && b.xmin <= a.xmax && a.ymin <= b.ymax && b.ymin <= a.ymax;
@@ -52,7 +39,7 @@ std::shared_ptr<const RobotMapSource::Indexed> RobotMapSource::slice(const Map& 
   }
   auto s = std::make_shared<Indexed>();
   s->obstacles = slice_at_height(full, laser_height).obstacles;  // outside the lock: O(map)
-  for (const Obstacle& o : s->obstacles) s->boxes.push_back(box_of(o.segments));
+  for (const Obstacle& o : s->obstacles) s->boxes.push_back(o.box());
   std::lock_guard lock(mutex_);
   bound_size(slices_);
   return slices_.emplace(key, std::move(s)).first->second;
@@ -79,7 +66,7 @@ std::shared_ptr<const RobotMapSource::Indexed> RobotMapSource::objects(const Map
   auto out = std::make_shared<Indexed>();
   out->obstacles.assign(std::make_move_iterator(seen.obstacles.begin() + static_cast<long>(stub.obstacles.size())),
                         std::make_move_iterator(seen.obstacles.end()));
-  for (const Obstacle& o : out->obstacles) out->boxes.push_back(box_of(o.segments));
+  for (const Obstacle& o : out->obstacles) out->boxes.push_back(o.box());
   std::lock_guard lock(mutex_);
   bound_size(objects_);
   objects_[key] = {scene, out};

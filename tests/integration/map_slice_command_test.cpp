@@ -50,15 +50,6 @@ TEST(MapSliceCommand, SeedSliceOfAStoredMap) {
   EXPECT_EQ(read_file(out), r.out);
 }
 
-std::map<std::string, std::string> yaml_fields(const std::string& text) {
-  std::map<std::string, std::string> kv;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line))
-    if (size_t c = line.find(": "); c != std::string::npos) kv[line.substr(0, c)] = line.substr(c + 2);
-  return kv;
-}
-
 TEST(MapSliceCommand, Nav2GridOfAStoredMap) {
   ensure_example_map("slice_map");
   const std::string base = temp_path("slice-grid");

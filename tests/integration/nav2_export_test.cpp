@@ -27,15 +27,6 @@ void import_room() {
   ASSERT_EQ(r.exit_code, 0) << r.err;
 }
 
-std::map<std::string, std::string> yaml_fields(const std::string& text) {
-  std::map<std::string, std::string> kv;
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line))
-    if (size_t c = line.find(": "); c != std::string::npos) kv[line.substr(0, c)] = line.substr(c + 2);
-  return kv;
-}
-
 // A P5 image read back: pixel(x, y) of the cell holding map point (x, y); the border
 // -0.5..15.5 gives the origin (-0.5, -0.5).
 struct Pgm {

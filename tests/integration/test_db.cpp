@@ -73,6 +73,15 @@ std::string read_file(const std::string& path) {
   return ss.str();
 }
 
+std::map<std::string, std::string> yaml_fields(const std::string& text) {
+  std::map<std::string, std::string> kv;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line))
+    if (size_t c = line.find(": "); c != std::string::npos) kv[line.substr(0, c)] = line.substr(c + 2);
+  return kv;
+}
+
 RunResult run(const std::string& program, const std::string& args) {
   const std::string out = temp_path("run.out"), err = temp_path("run.err");
   const std::string cmd = std::string(FLEETMAP_BIN_DIR) + "/" + program + " " + args + " >" + out + " 2>" + err;

@@ -3,6 +3,7 @@
 // (scripts/db.sh start with FLEETMAP_HOME/FLEETMAP_PORT from tests/CMakeLists.txt),
 // its accounts, and running the real programs.
 #include <chrono>
+#include <map>
 #include <memory>
 #include <string>
 #include <thread>
@@ -55,5 +56,7 @@ std::string instance_home();                           // the test instance's fo
 std::string db_script();                               // "FLEETMAP_HOME=... FLEETMAP_PORT=... bash scripts/db.sh"
 void write_file(const std::string& path, const std::string& text);
 std::string read_file(const std::string& path);
+// The "key: value" lines of a flat YAML text (a Nav2 map .yaml).
+std::map<std::string, std::string> yaml_fields(const std::string& text);
 
 }  // namespace fleetmap::test
