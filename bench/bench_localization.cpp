@@ -1,7 +1,7 @@
 // Onboard localization benchmark (SPEC 6, 8; seed 000 section 4.1): the particle filter
 // with the seed's parameters (NP 6000, NL 131 over 180 degrees, RMAX 15 m, sigma_L 5 cm,
 // alpha 1, beta 0.1, sigma_m 0.5 m, compass +-3 degrees) on real maps, simulated sensors,
-// in three configurations (client/localization/localization_trials.h, the runner that
+// in three configurations (client/sim/localization_trials.h, the runner that
 // `fleetmap-robot --trials` shares): `seed` (eq. 5-6 as written,
 // ParticleFilterOptions::seed_model, the baseline), `robust` (beam product with a floor,
 // tempering) and `search` (robust_search: robust with the global search, the robot's
@@ -24,12 +24,12 @@
 
 #include <CLI/CLI.hpp>
 
-#include "client/localization/drive_simulator.h"
-#include "client/localization/laser_simulator.h"
-#include "client/localization/localization_trials.h"
+#include "client/sim/drive_simulator.h"
+#include "client/sim/laser_simulator.h"
+#include "client/sim/localization_trials.h"
 #include "client/localization/particle_filter.h"
-#include "common/grid_ray_caster.h"
-#include "common/seed_ray_caster.h"
+#include "common/raycast/grid_ray_caster.h"
+#include "common/raycast/seed_ray_caster.h"
 
 namespace {
 

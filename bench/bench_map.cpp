@@ -10,8 +10,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "common/amrl_import.h"
-#include "common/map_window.h"
+#include "common/io/amrl_import.h"
+#include "common/map/map_window.h"
 #include "protocol/connection.h"
 #include "protocol/map_store.h"
 

@@ -14,7 +14,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "common/number_format.h"
+#include "common/geometry/number_format.h"
 #include "protocol/connection.h"
 #include "protocol/map_store.h"
 #include "protocol/scene_store.h"

@@ -1,5 +1,5 @@
 // Path planning benchmark (SPEC 7, 8): RRT-Connect + smoothing (MapPlanner) on the campus
-// map against the reference grid A* (common/grid_astar.h), measured in the same run, for
+// map against the reference grid A* (common/planning/grid_astar.h), measured in the same run, for
 // random start/goal pairs that A* can join (so a path surely exists, grid_astar.h):
 // planning time (median, p95) of both, and the smoothed length over A*'s length.
 // A* carries the 8-connected grid's detour; "A* shortcut" (A*'s path through the same
@@ -15,11 +15,11 @@
 
 #include <CLI/CLI.hpp>
 
-#include "common/amrl_import.h"
-#include "common/grid_astar.h"
-#include "common/map_planner.h"
-#include "common/map_svg.h"
-#include "common/seed_format.h"
+#include "common/io/amrl_import.h"
+#include "common/planning/grid_astar.h"
+#include "common/planning/map_planner.h"
+#include "common/io/map_svg.h"
+#include "common/io/seed_format.h"
 
 namespace {
 

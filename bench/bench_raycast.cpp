@@ -19,11 +19,11 @@
 #include <thread>
 #include <vector>
 
-#include "common/amrl_import.h"
-#include "common/grid_ray_caster.h"
-#include "common/seed_format.h"
-#include "common/seed_ray_caster.h"
-#include "common/sweep_ray_caster.h"
+#include "common/io/amrl_import.h"
+#include "common/raycast/grid_ray_caster.h"
+#include "common/io/seed_format.h"
+#include "common/raycast/seed_ray_caster.h"
+#include "common/raycast/sweep_ray_caster.h"
 
 namespace {
 

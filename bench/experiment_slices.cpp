@@ -2,7 +2,7 @@
 // mounted at h1 = 0.381 m drives 100 m and tracks with the particle filter on the map
 // sliced at its own height (Fig. 10, "map of correct height") and on the map sliced at
 // the other laser's height h2 = 0.794 m (Fig. 9, "map of wrong height"). Both maps hold
-// the scene's objects seen at their height (common/scene_laser.h), and the world the
+// the scene's objects seen at their height (common/slicing/scene_laser.h), and the world the
 // simulated laser sees is the slice at 0.381 m with the objects (plus, with --people,
 // unmodelled people). Each run drives once (seeded) and both filters read the same
 // odometry and scans, so the two columns differ only by the map.
@@ -29,15 +29,15 @@
 
 #include <CLI/CLI.hpp>
 
-#include "client/localization/drive_simulator.h"
+#include "client/sim/drive_simulator.h"
 #include "client/localization/free_space.h"
-#include "client/localization/laser_simulator.h"
+#include "client/sim/laser_simulator.h"
 #include "client/localization/particle_filter.h"
-#include "common/grid_ray_caster.h"
-#include "common/map_slice.h"
-#include "common/scene_geojson.h"
-#include "common/scene_laser.h"
-#include "common/seed_format.h"
+#include "common/raycast/grid_ray_caster.h"
+#include "common/slicing/map_slice.h"
+#include "common/io/scene_geojson.h"
+#include "common/slicing/scene_laser.h"
+#include "common/io/seed_format.h"
 
 namespace {
 

@@ -33,18 +33,18 @@
 
 #include <CLI/CLI.hpp>
 
-#include "client/localization/drive_simulator.h"
+#include "client/sim/drive_simulator.h"
 #include "client/localization/free_space.h"
-#include "client/localization/laser_simulator.h"
+#include "client/sim/laser_simulator.h"
 #include "client/localization/particle_filter.h"
 #include "client/zoom_map.h"
-#include "common/amrl_import.h"
-#include "common/grid_ray_caster.h"
-#include "common/map_window.h"
-#include "common/ray_rules.h"
-#include "common/ray_segment.h"
-#include "common/seed_format.h"
-#include "common/seed_ray_caster.h"
+#include "common/io/amrl_import.h"
+#include "common/raycast/grid_ray_caster.h"
+#include "common/map/map_window.h"
+#include "common/raycast/ray_rules.h"
+#include "common/raycast/ray_segment.h"
+#include "common/io/seed_format.h"
+#include "common/raycast/seed_ray_caster.h"
 
 namespace {
 

@@ -76,7 +76,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "common/geometry.h"
+#include "common/geometry/geometry.h"
 #include "protocol/connection.h"
 #include "protocol/db_settings.h"
 #include "protocol/map_codec.h"

@@ -19,7 +19,7 @@
 
 #include <mysql++/mysql++.h>
 
-#include "common/map.h"
+#include "common/map/map.h"
 #include "protocol/db_settings.h"
 #include "protocol/params.h"
 #include "protocol/robot_channel.h"

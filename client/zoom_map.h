@@ -5,7 +5,7 @@
 // have changed). Pure decision logic: no clock, no database.
 #include <optional>
 
-#include "common/geometry.h"
+#include "common/geometry/geometry.h"
 
 namespace fleetmap {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <map>
 
-#include "common/number_format.h"
+#include "common/geometry/number_format.h"
 #include "protocol/connection.h"
 #include "protocol/sql_util.h"
 

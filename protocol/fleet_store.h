@@ -28,7 +28,7 @@ struct RobotStatus {
 // A robot's profile (issue 8, seed 004; columns of robots): what its maps and plans
 // depend on. nullopt: the server's default (robot_radius_m, body_height_m in
 // [server]); without a laser height the server sends the stored map unsliced
-// (server/robot_map_source.h).
+// (server/daemon/robot_map_source.h).
 struct RobotProfile {
   std::optional<double> laser_height;  // m over the floor, [0, 1000]
   std::optional<double> radius;        // m, (0, 100]

@@ -11,7 +11,7 @@
 
 #include <mysql++/mysql++.h>
 
-#include "common/scene.h"
+#include "common/scene/scene.h"
 
 namespace fleetmap {
 

@@ -4,7 +4,7 @@
 
 #include <zlib.h>
 
-#include "common/seed_format.h"
+#include "common/io/seed_format.h"
 
 namespace fleetmap {
 

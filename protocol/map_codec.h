@@ -5,8 +5,8 @@
 #include <string>
 #include <string_view>
 
-#include "common/map.h"
-#include "common/map_validation.h"
+#include "common/map/map.h"
+#include "common/map/map_validation.h"
 #include "protocol/params.h"
 
 namespace fleetmap {

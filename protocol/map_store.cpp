@@ -3,8 +3,8 @@
 #include <charconv>
 #include <map>
 
-#include "common/map_window.h"
-#include "common/number_format.h"
+#include "common/map/map_window.h"
+#include "common/geometry/number_format.h"
 #include "protocol/connection.h"
 
 namespace fleetmap {

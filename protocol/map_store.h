@@ -9,7 +9,7 @@
 
 #include <mysql++/mysql++.h>
 
-#include "common/map.h"
+#include "common/map/map.h"
 
 namespace fleetmap {
 

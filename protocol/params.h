@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "common/geometry.h"
+#include "common/geometry/geometry.h"
 #include "protocol/ops.h"
 
 namespace fleetmap {

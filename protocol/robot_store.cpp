@@ -1,6 +1,6 @@
 #include "protocol/robot_store.h"
 
-#include "common/number_format.h"
+#include "common/geometry/number_format.h"
 #include "protocol/sql_util.h"
 
 namespace fleetmap {

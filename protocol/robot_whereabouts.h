@@ -7,7 +7,7 @@
 
 #include <mysql++/mysql++.h>
 
-#include "common/geometry.h"
+#include "common/geometry/geometry.h"
 
 namespace fleetmap {
 

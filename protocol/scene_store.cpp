@@ -8,9 +8,9 @@
 #include <set>
 #include <unordered_map>
 
-#include "common/map_validation.h"
-#include "common/number_format.h"
-#include "common/polygon.h"
+#include "common/map/map_validation.h"
+#include "common/geometry/number_format.h"
+#include "common/geometry/polygon.h"
 #include "protocol/connection.h"
 #include "protocol/batch_insert.h"
 #include "protocol/live_scene.h"
@@ -40,7 +40,7 @@ std::string utf8_prefix(const std::string& s, size_t n) {
   return s.substr(0, n);
 }
 
-// The reader's rule for tags (common/scene_geojson.cpp), within the column's 64 bytes.
+// The reader's rule for tags (common/io/scene_geojson.cpp), within the column's 64 bytes.
 void check_tag(const std::string& t) {
   if (t.empty() || t.size() > 64) throw std::invalid_argument("expected a tag of 1-64 bytes, got '" + t + "'");
   if (t.find(':') != std::string::npos) throw std::invalid_argument("expected a tag without ':', got '" + t + "'");
@@ -51,7 +51,7 @@ void check_polygon(const Polygon& ring, const std::string& what) {
   if (auto p = polygon_problem(ring)) throw std::invalid_argument(what + ": " + *p);
 }
 
-// What import refuses before any SQL runs: the rules of common/scene.h.
+// What import refuses before any SQL runs: the rules of common/scene/scene.h.
 void check_scene(const Scene& scene) {
   std::set<std::string> keys;
   for (const EnvObject& o : scene.objects) {
@@ -152,7 +152,7 @@ std::string candidates_sql(unsigned map_id, Point p, const std::string& tag, std
 
 // Per object, its least element distance to p, nearest first, ties by key; at most
 // limit objects, and only those within `within`. The distances are computed here,
-// exactly (common/polygon.h): MariaDB 10.11's ST_Distance between a polygon and a point
+// exactly (common/geometry/polygon.h): MariaDB 10.11's ST_Distance between a polygon and a point
 // is approximate (off by up to 0.17 m on 9 of 200 random boxes; docs/semantic-layer.md).
 std::vector<ObjectRow> nearest(mysqlpp::Connection& c, const std::string& sql, Point p, std::optional<size_t> limit,
                                std::optional<double> within, size_t* candidates = nullptr) {

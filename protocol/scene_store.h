@@ -1,7 +1,7 @@
 #pragma once
 // The semantic layer in the database (issue 8): tables tags, env_objects,
 // object_elements (footprint POLYGON, spatial index), avoided_areas (POLYGON, spatial
-// index) and map_bounds, sql/60_semantic.sql. A map's Scene (common/scene.h) is found by
+// index) and map_bounds, sql/60_semantic.sql. A map's Scene (common/scene/scene.h) is found by
 // the map's name; deleting or replacing the map deletes its scene (foreign-key cascade).
 //
 //   SceneStore store(conn);
@@ -17,7 +17,7 @@
 
 #include <mysql++/mysql++.h>
 
-#include "common/scene.h"
+#include "common/scene/scene.h"
 
 namespace fleetmap {
 
@@ -122,7 +122,7 @@ class SceneStore {
   std::vector<std::string> avoided_areas_containing(const std::string& map, Point p);
   // Adds an avoided area from WKT 'POLYGON((x y, ...))'; returns its key (generated as
   // "avoid-N" when key is empty). Throws std::invalid_argument (malformed WKT, or a
-  // polygon common/polygon.h refuses), SceneKeyExists, MapNotFound.
+  // polygon common/geometry/polygon.h refuses), SceneKeyExists, MapNotFound.
   std::string add_avoided_area(const std::string& map, const std::string& wkt, const std::string& key = "");
   std::vector<AvoidedArea> avoided_areas(const std::string& map);
   bool remove_avoided_area(const std::string& map, const std::string& key);

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "common/number_format.h"
+#include "common/geometry/number_format.h"
 #include "protocol/batch_insert.h"
 #include "protocol/connection.h"
 #include "protocol/map_store.h"

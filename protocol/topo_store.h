@@ -15,7 +15,7 @@
 
 #include <mysql++/mysql++.h>
 
-#include "common/topo_graph.h"
+#include "common/planning/topo_graph.h"
 
 namespace fleetmap {
 

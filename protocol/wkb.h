@@ -2,7 +2,7 @@
 // Geometries read back from MariaDB as ST_AsBinary (WKB): exact doubles, unlike ST_AsText.
 #include <mysql++/mysql++.h>
 
-#include "common/polygon.h"
+#include "common/geometry/polygon.h"
 
 namespace fleetmap {
 

@@ -1,6 +1,6 @@
 #include "protocol/write_batch.h"
 
-#include "common/number_format.h"
+#include "common/geometry/number_format.h"
 #include "protocol/connection.h"
 
 namespace fleetmap {

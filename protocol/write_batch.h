@@ -11,7 +11,7 @@
 
 #include <mysql++/mysql++.h>
 
-#include "common/geometry.h"
+#include "common/geometry/geometry.h"
 #include "protocol/params.h"
 #include "protocol/request_queue.h"
 #include "protocol/robot_store.h"

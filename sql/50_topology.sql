@@ -42,7 +42,7 @@ CREATE TABLE IF NOT EXISTS topo_edges (
   ord         INT UNSIGNED NOT NULL,          -- position in the file
   s0_id       INT UNSIGNED NOT NULL,
   s1_id       INT UNSIGNED NOT NULL,
-  -- seed 003: corridor, room, door; stairs and elevator from the AMRL flags (common/topo_graph.h)
+  -- seed 003: corridor, room, door; stairs and elevator from the AMRL flags (common/planning/topo_graph.h)
   type        ENUM('corridor','room','door','stairs','elevator') NOT NULL,
   has_door    TINYINT(1) NOT NULL DEFAULT 0,
   has_automated_door TINYINT(1) NOT NULL DEFAULT 0,

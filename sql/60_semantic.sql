@@ -18,10 +18,10 @@
 
 CREATE TABLE IF NOT EXISTS tags (
   tag         VARCHAR(64) CHARACTER SET utf8mb4 COLLATE utf8mb4_nopad_bin NOT NULL PRIMARY KEY,
-  -- common/scene.h TagInfo: what a planner or a person does with things of this tag
+  -- common/scene/scene.h TagInfo: what a planner or a person does with things of this tag
   class       ENUM('obstacle','landmark','interactable','dynamic') NOT NULL,
   description VARCHAR(255) NOT NULL DEFAULT '',
-  -- ':' separates tag and id in segment semantics (common/scene_laser.h)
+  -- ':' separates tag and id in segment semantics (common/slicing/scene_laser.h)
   CONSTRAINT ck_tags_tag CHECK (tag <> '' AND LOCATE(':', tag) = 0)
 ) ENGINE=InnoDB;
 
@@ -104,7 +104,7 @@ INSERT IGNORE INTO tags (tag, class, description) VALUES
 -- people's queries. MariaDB 10.11's ST_Distance(polygon, point) is approximate: on 200
 -- random boxes it was off on 9, by up to 0.17 m (its distance to a two-point LINESTRING
 -- is exact, so this measures edge by edge). protocol/scene_store.cpp computes the same
--- distance in C++ (common/polygon.h distance_to_polygon).
+-- distance in C++ (common/geometry/polygon.h distance_to_polygon).
 DELIMITER //
 CREATE OR REPLACE FUNCTION polygon_distance(poly GEOMETRY, p GEOMETRY) RETURNS DOUBLE
   DETERMINISTIC NO SQL SQL SECURITY INVOKER

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "common/ray_rules.h"
+#include "common/raycast/ray_rules.h"
 
 namespace fleetmap::localization {
 

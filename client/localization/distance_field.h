@@ -14,7 +14,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "common/map.h"
+#include "common/map/map.h"
 
 namespace fleetmap::localization {
 

@@ -5,13 +5,13 @@
 // Fig. 4).
 //
 // A closed obstacle counts only when its segments form a closed chain: the cut obstacles
-// of a window (SPEC 5.4) and the AMRL maps' loose walls (common/amrl_import.h) enclose
+// of a window (SPEC 5.4) and the AMRL maps' loose walls (common/io/amrl_import.h) enclose
 // nothing, so on those maps free space is the whole border. Particles are not kept away
 // from walls: a particle too close to one scores badly and is resampled away.
 #include <random>
 #include <vector>
 
-#include "common/map.h"
+#include "common/map/map.h"
 
 namespace fleetmap::localization {
 

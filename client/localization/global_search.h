@@ -28,7 +28,7 @@
 
 #include "client/localization/distance_field.h"
 #include "client/localization/pose.h"
-#include "common/map.h"
+#include "common/map/map.h"
 
 namespace fleetmap::localization {
 

@@ -11,7 +11,7 @@
 #include "client/localization/parallel.h"
 #include "client/localization/stitched_scan.h"
 #include "client/localization/turn_registration.h"
-#include "common/sweep_ray_caster.h"
+#include "common/raycast/sweep_ray_caster.h"
 
 namespace fleetmap::localization {
 

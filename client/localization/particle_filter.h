@@ -60,8 +60,8 @@
 #include "client/localization/pose.h"
 #include "client/localization/resampling.h"
 #include "client/localization/sensor_model.h"
-#include "common/map.h"
-#include "common/ray_caster.h"
+#include "common/map/map.h"
+#include "common/raycast/ray_caster.h"
 
 namespace fleetmap::localization {
 

@@ -10,7 +10,7 @@
 // names (Pose, normalize_angle, ...) do not meet the simulated robot's (client/sim).
 #include <cmath>
 
-#include "common/geometry.h"
+#include "common/geometry/geometry.h"
 
 namespace fleetmap::localization {
 

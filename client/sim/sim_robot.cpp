@@ -4,7 +4,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "common/sweep_ray_caster.h"
+#include "common/raycast/sweep_ray_caster.h"
 #include "protocol/map_codec.h"
 
 namespace fleetmap {

@@ -8,7 +8,7 @@
 #include <memory>
 #include <optional>
 
-#include "client/localization/laser_simulator.h"
+#include "client/sim/laser_simulator.h"
 #include "client/localization/particle_filter.h"
 #include "client/robot_client.h"
 #include "client/sim/differential_drive.h"

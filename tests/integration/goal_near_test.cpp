@@ -10,10 +10,10 @@
 #include <string>
 #include <thread>
 
-#include "common/goal_near.h"
-#include "common/planning_scene.h"
+#include "common/planning/goal_near.h"
+#include "common/planning/planning_scene.h"
 #include "protocol/scene_store.h"
-#include "tests/common/scene_planning_test_util.h"
+#include "tests/common/planning/scene_planning_test_util.h"
 #include "tests/integration/server_fixture.h"
 #include "tests/integration/test_db.h"
 

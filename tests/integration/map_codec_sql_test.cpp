@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
-#include "common/seed_format.h"
+#include "common/io/seed_format.h"
 #include "protocol/map_codec.h"
 #include "tests/integration/server_fixture.h"
 #include "tests/integration/test_db.h"

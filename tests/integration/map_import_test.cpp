@@ -1,8 +1,8 @@
 // Map import/export through the real `fleetmap` program and a real MariaDB.
 #include <gtest/gtest.h>
 
-#include "common/amrl_import.h"
-#include "common/seed_format.h"
+#include "common/io/amrl_import.h"
+#include "common/io/seed_format.h"
 #include "tests/integration/test_db.h"
 
 namespace fleetmap::test {

@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "common/amrl_import.h"
-#include "common/map_window.h"
-#include "common/seed_format.h"
+#include "common/io/amrl_import.h"
+#include "common/map/map_window.h"
+#include "common/io/seed_format.h"
 #include "protocol/connection.h"
 #include "protocol/map_store.h"
 #include "tests/integration/test_db.h"

@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "common/polygon.h"
-#include "common/scene_geojson.h"
+#include "common/geometry/polygon.h"
+#include "common/io/scene_geojson.h"
 #include "tests/integration/server_fixture.h"
 #include "tests/integration/test_db.h"
 

@@ -1,4 +1,4 @@
-// The semantic layer through the real `fleetmap` program (server/object_commands.h):
+// The semantic layer through the real `fleetmap` program (server/cli/object_commands.h):
 // objects import|export|list|near, tags, avoid, with their exit codes; a malformed
 // GeoJSON names the feature and field and stores nothing; import -> export -> import
 // gives the same file.
@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "common/scene_geojson.h"
-#include "common/scene_query.h"
+#include "common/io/scene_geojson.h"
+#include "common/scene/scene_query.h"
 #include "protocol/connection.h"
 #include "tests/integration/test_db.h"
 

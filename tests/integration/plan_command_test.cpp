@@ -1,4 +1,4 @@
-// `fleetmap plan` (server/plan_command.h) through the real program: on a stored map and on
+// `fleetmap plan` (server/cli/plan_command.h) through the real program: on a stored map and on
 // a map file, its output format, and its exit codes.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "common/geometry.h"
+#include "common/geometry/geometry.h"
 #include "tests/integration/test_db.h"
 
 namespace fleetmap::test {

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "common/map_window.h"
-#include "common/seed_format.h"
+#include "common/map/map_window.h"
+#include "common/io/seed_format.h"
 #include "tests/integration/server_fixture.h"
 #include "tests/integration/test_db.h"
 

@@ -6,8 +6,8 @@
 
 #include "client/robot_client.h"
 #include "client/zoom_map_client.h"
-#include "common/map_window.h"
-#include "common/seed_format.h"
+#include "common/map/map_window.h"
+#include "common/io/seed_format.h"
 #include "tests/integration/server_fixture.h"
 #include "tests/integration/test_db.h"
 

@@ -8,11 +8,11 @@
 
 #include <gtest/gtest.h>
 
-#include "common/map_slice.h"
-#include "common/map_window.h"
-#include "common/scene_geojson.h"
-#include "common/scene_laser.h"
-#include "common/seed_format.h"
+#include "common/slicing/map_slice.h"
+#include "common/map/map_window.h"
+#include "common/io/scene_geojson.h"
+#include "common/slicing/scene_laser.h"
+#include "common/io/seed_format.h"
 #include "protocol/connection.h"
 #include "tests/integration/server_fixture.h"
 #include "tests/integration/test_db.h"

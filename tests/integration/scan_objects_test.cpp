@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "common/seed_format.h"
+#include "common/io/seed_format.h"
 #include "tests/integration/test_db.h"
 
 namespace fleetmap::test {

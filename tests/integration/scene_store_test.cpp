@@ -1,6 +1,6 @@
 // The semantic layer in a real MariaDB (issue 8, protocol/scene_store.h): the example
 // scene stored and read back, nearest objects and avoided areas against the brute-force
-// reference of common/scene_query.h, imports that fail change nothing, --replace, tags,
+// reference of common/scene/scene_query.h, imports that fail change nothing, --replace, tags,
 // the spatial index, observations and their expiry, the inspector's views and the SQL
 // of docs/semantic-layer.md.
 #include <gtest/gtest.h>
@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "common/scene_geojson.h"
-#include "common/scene_query.h"
+#include "common/io/scene_geojson.h"
+#include "common/scene/scene_query.h"
 #include "protocol/connection.h"
 #include "protocol/map_store.h"
 #include "protocol/scene_store.h"

@@ -14,9 +14,9 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
-#include "common/amrl_import.h"
-#include "common/map_window.h"
-#include "common/seed_format.h"
+#include "common/io/amrl_import.h"
+#include "common/map/map_window.h"
+#include "common/io/seed_format.h"
 #include "protocol/map_codec.h"
 
 namespace fleetmap {

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "client/localization/distance_field.h"
-#include "test_maps.h"
+#include "tests/client/test_maps.h"
 
 namespace fleetmap::localization {
 namespace {

@@ -4,8 +4,8 @@
 #include <random>
 
 #include "client/localization/free_space.h"
-#include "common/map_window.h"
-#include "test_maps.h"
+#include "common/map/map_window.h"
+#include "tests/client/test_maps.h"
 
 namespace fleetmap::localization {
 namespace {

@@ -10,13 +10,13 @@
 #include <string>
 #include <vector>
 
-#include "client/localization/drive_simulator.h"
+#include "client/sim/drive_simulator.h"
 #include "client/localization/free_space.h"
 #include "client/localization/global_search.h"
-#include "client/localization/laser_simulator.h"
-#include "common/amrl_import.h"
-#include "common/grid_ray_caster.h"
-#include "test_maps.h"
+#include "client/sim/laser_simulator.h"
+#include "common/io/amrl_import.h"
+#include "common/raycast/grid_ray_caster.h"
+#include "tests/client/test_maps.h"
 
 namespace fleetmap::localization {
 namespace {

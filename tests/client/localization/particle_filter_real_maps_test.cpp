@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "client/localization/drive_simulator.h"
-#include "client/localization/laser_simulator.h"
+#include "client/sim/drive_simulator.h"
+#include "client/sim/laser_simulator.h"
 #include "client/localization/particle_filter.h"
-#include "common/amrl_import.h"
-#include "common/grid_ray_caster.h"
-#include "common/map_window.h"
+#include "common/io/amrl_import.h"
+#include "common/raycast/grid_ray_caster.h"
+#include "common/map/map_window.h"
 
 namespace fleetmap::localization {
 namespace {

@@ -8,12 +8,12 @@
 #include <stdexcept>
 #include <vector>
 
-#include "client/localization/drive_simulator.h"
-#include "client/localization/laser_simulator.h"
+#include "client/sim/drive_simulator.h"
+#include "client/sim/laser_simulator.h"
 #include "client/localization/particle_filter.h"
-#include "common/grid_ray_caster.h"
-#include "common/map_window.h"
-#include "test_maps.h"
+#include "common/raycast/grid_ray_caster.h"
+#include "common/map/map_window.h"
+#include "tests/client/test_maps.h"
 
 namespace fleetmap::localization {
 namespace {

@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "client/localization/distance_field.h"
-#include "client/localization/laser_simulator.h"
+#include "client/sim/laser_simulator.h"
 #include "client/localization/stitched_scan.h"
-#include "common/grid_ray_caster.h"
-#include "test_maps.h"
+#include "common/raycast/grid_ray_caster.h"
+#include "tests/client/test_maps.h"
 
 namespace fleetmap::localization {
 namespace {

@@ -1,0 +1,217 @@
+#include "client/sim/localization_trials.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "client/sim/drive_simulator.h"
+#include "client/localization/free_space.h"
+#include "client/localization/global_search.h"
+#include "common/io/amrl_import.h"
+#include "common/io/seed_format.h"
+
+namespace fleetmap::localization {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+double compass_reading(const Pose& truth, double sd, double half_width, std::mt19937_64& rng) {
+  std::normal_distribution<double> n(0.0, sd);
+  return normalize_angle(truth.theta + std::clamp(n(rng), -half_width, half_width));
+}
+
+double percentile(std::vector<int> v, double q) {
+  if (v.empty()) return NAN;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, static_cast<size_t>(q * v.size()))];
+}
+
+const char* describe(const ParticleFilterOptions& f) {
+  return f.sensor.combination == BeamCombination::Harmonic ? "eq. (6) harmonic" : "beam product";
+}
+
+}  // namespace
+
+GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s) {
+  GlobalResult res;
+  const FreeSpace free_space(map);
+  const std::vector<double> beams = evenly_spread_angles(s.laser.beams, s.laser.fov);
+  // One search (its likelihood field) for every trial on this map, as one robot keeps it.
+  std::shared_ptr<const GlobalSearch> search;
+  if (s.filter.global_search) {
+    const auto t0 = Clock::now();
+    GlobalSearchOptions so = s.filter.search;
+    so.field.margin = s.filter.laser.rmax;
+    so.field.laser_height = s.filter.laser.laser_height;
+    so.threads = s.filter.threads;
+    search = std::make_shared<GlobalSearch>(map, so);
+    res.setup_seconds = seconds_since(t0);
+  }
+  const auto t0 = Clock::now();
+  for (int t = 0; t < s.trials; ++t) {
+    std::mt19937_64 rng(s.seed * 1000003 + t);
+    const Pose start = pick_start_pose(free_space, *world, beams, s.min_hit_fraction, 0.5, rng);
+    ParticleFilterOptions fo = s.filter;
+    fo.seed = s.seed * 7919 + t;
+    ParticleFilter pf(map, world, fo);
+    if (search) pf.set_global_search(search);
+    LaserSimulator laser(world, s.laser, rng());
+    DriveOptions drive;
+    drive.step = s.global_step;
+    drive.look_around_steps = s.look_around;
+    drive.look_around_turn = s.look_around_turn;
+    WanderDriver driver(world, start, drive, rng());
+    Pose truth = start;
+    pf.init_global(compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
+    int first = -1;
+    double err = 0;
+    for (int u = 1; u <= s.updates; ++u) {
+      if (u > 1) {
+        const DriveStep st = driver.step();
+        truth = st.truth;
+        pf.predict(st.odometry);
+      }
+      pf.update(laser.scan(truth), compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
+      const PoseEstimate e = pf.estimate();
+      err = distance(e.pose, truth);
+      const double err_theta = std::fabs(angle_diff(e.pose.theta, truth.theta));
+      const bool within = err < 0.3 && err_theta < deg2rad(3.0);
+      if (within && first < 0) first = u;
+      if (!within) first = -1;  // must stay within to the end
+    }
+    ++res.trials;
+    if (first > 0) {
+      ++res.converged;
+      res.first_within.push_back(first);
+    }
+    res.final_error.push_back(err);
+    if (s.per_trial)
+      std::fprintf(s.per_trial, "  trial %d: start (%.2f, %.2f, %.1f deg): %s, final error %.2f m\n", t, start.x,
+                   start.y, rad2deg(start.theta), first > 0 ? ("within from update " + std::to_string(first)).c_str() : "not within",
+                   err);
+  }
+  res.seconds = seconds_since(t0);
+  return res;
+}
+
+TrackResult run_tracking_trial(const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s,
+                               bool adaptive) {
+  TrackResult res;
+  std::mt19937_64 rng(s.seed * 31337);
+  const FreeSpace free_space(map);
+  const std::vector<double> beams = evenly_spread_angles(s.laser.beams, s.laser.fov);
+  const Pose start = pick_start_pose(free_space, *world, beams, s.min_hit_fraction, 0.5, rng);
+  ParticleFilterOptions fo = s.filter;
+  fo.adaptive = adaptive;
+  fo.kld.max_particles = fo.particles;
+  ParticleFilter pf(map, world, fo);
+  LaserSimulator laser(world, s.laser, rng());
+  WanderDriver driver(world, start, DriveOptions{}, rng());
+  pf.init_pose(start, 0.1, deg2rad(2.0));
+  Pose dead = start;
+  double sq = 0, sq_theta = 0, sq_dead = 0, particles = 0;
+  const auto t0 = Clock::now();
+  while (res.driven < s.drive) {
+    const DriveStep st = driver.step();
+    res.driven += st.driven;
+    dead = compose(dead, st.odometry);
+    pf.predict(st.odometry);
+    pf.update(laser.scan(st.truth), compass_reading(st.truth, s.compass_sd, fo.compass_half_width, rng));
+    const PoseEstimate e = pf.estimate();
+    const double err = distance(e.pose, st.truth), et = angle_diff(e.pose.theta, st.truth.theta);
+    sq += err * err;
+    sq_theta += et * et;
+    sq_dead += distance(dead, st.truth) * distance(dead, st.truth);
+    res.max = std::max(res.max, err);
+    particles += static_cast<double>(e.particles);
+    ++res.updates;
+    res.dead_reckoning_final = distance(dead, st.truth);
+  }
+  res.seconds = seconds_since(t0);
+  res.rms = std::sqrt(sq / res.updates);
+  res.rms_theta = std::sqrt(sq_theta / res.updates);
+  res.dead_reckoning_rms = std::sqrt(sq_dead / res.updates);
+  res.mean_particles = particles / res.updates;
+  return res;
+}
+
+const std::vector<std::string>& preset_names() {
+  static const std::vector<std::string> names{"seed", "robust", "search"};
+  return names;
+}
+
+std::optional<ParticleFilterOptions> preset(const std::string& name) {
+  if (name == "seed") return ParticleFilterOptions::seed_model();
+  if (name == "robust") return ParticleFilterOptions::robust();
+  if (name == "search") return ParticleFilterOptions::robust_search();
+  return std::nullopt;
+}
+
+Map load_map_file(const std::string& path) {
+  return path.ends_with(".vectormap.txt") ? read_amrl_file(path, AmrlOptions{}) : read_seed_file(path);
+}
+
+void report_map_header(std::FILE* out, const std::string& path, const Map& map, const TrialSettings& s) {
+  const Rect r = map.border.rect();
+  std::fprintf(out,
+               "\n== %s: %zu segments, border %.0f x %.0f m (%.0f m2); NP %zu, NL %d, RMAX %.0f m, sigma_L %.2f m, "
+               "alpha %.2g, beta %.2g, sigma_m %.2g m, %d threads\n",
+               path.c_str(), map.segment_count(), r.xmax - r.xmin, r.ymax - r.ymin,
+               (r.xmax - r.xmin) * (r.ymax - r.ymin), s.filter.particles, s.filter.beams, s.filter.laser.rmax,
+               s.laser.sigma, s.filter.sensor.alpha, s.filter.sensor.beta, s.filter.sensor.sigma_m, s.filter.threads);
+  std::fprintf(out, "seed 000 Fig. 5 (the figure to compare with): one simulated run on 10 000 m2, converged in 4 "
+                    "iterations; no success rate, tracking error or rate given\n");
+}
+
+void report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& base,
+                   const std::string& name, bool global, bool tracking) {
+  TrialSettings s = base;
+  s.filter = preset(name).value_or(base.filter);
+  s.filter.particles = base.filter.particles;
+  s.filter.threads = base.filter.threads;
+  s.filter.kld.max_particles = base.filter.particles;
+  const ParticleFilterOptions& f = s.filter;
+  std::fprintf(out, "-- %s: %s, gamma %.2g, tempering ESS %.2g x %d stages, init density %.2g /m2, roughening %.2g%s\n",
+               name.c_str(), describe(f), f.sensor.gamma, f.tempering_ess, f.tempering_stages, f.global_density,
+               f.roughening, f.global_search ? ", global search (likelihood field, ray-cast rerank)" : "");
+  std::fflush(out);
+  if (global) {
+    const GlobalResult g = run_global_trials(map, world, s);
+    std::vector<double> errs = g.final_error;
+    std::sort(errs.begin(), errs.end());
+    char setup[64] = "";
+    if (f.global_search) std::snprintf(setup, sizeof setup, " + %.2f s once per map (field)", g.setup_seconds);
+    std::fprintf(out,
+                 "global localization, %d trials (%d people/scan; %d turns of %.0f deg in place, then %.2g m steps): "
+                 "%.1f %% within 0.3 m and 3 deg after <= %d updates "
+                 "(goal >= 95 %%); first within at update median %.0f, p90 %.0f; final error median %.2f m; "
+                 "%.2f s per localization (%d updates)%s\n",
+                 g.trials, s.laser.people, s.look_around, rad2deg(s.look_around_turn), s.global_step,
+                 100.0 * g.converged / std::max(1, g.trials), s.updates,
+                 percentile(g.first_within, 0.5), percentile(g.first_within, 0.9),
+                 errs.empty() ? NAN : errs[errs.size() / 2], g.seconds / std::max(1, g.trials), s.updates,
+                 setup);
+    std::fflush(out);
+  }
+  if (tracking) {
+    for (bool adaptive : {false, true}) {
+      const TrackResult t = run_tracking_trial(map, world, s, adaptive);
+      std::fprintf(out,
+                   "tracking %s, %.0f m, %d updates: RMS %.3f m (goal < 0.10 m), max %.3f m, RMS heading %.2f deg, "
+                   "mean %.0f particles, %.1f Hz\n",
+                   adaptive ? "KLD adaptive" : "fixed NP    ", t.driven, t.updates, t.rms, t.max,
+                   rad2deg(t.rms_theta), t.mean_particles, t.updates / t.seconds);
+      if (!adaptive)
+        std::fprintf(out, "  baseline: dead reckoning on the same odometry: RMS %.3f m, final %.3f m\n",
+                     t.dead_reckoning_rms, t.dead_reckoning_final);
+      std::fflush(out);
+    }
+  }
+}
+
+}  // namespace fleetmap::localization

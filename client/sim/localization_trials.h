@@ -1,0 +1,76 @@
+#pragma once
+// The localization trials of the robot issue, shared by bench-localization and
+// `fleetmap-robot --trials` (one runner, one report):
+//
+//  1. global localization: from a compass-only prior, the share of trials whose estimate
+//     is within 0.3 m and 3 degrees after at most `updates` updates and stays so to the
+//     last (the robot looking around, then wandering global_step metres between scans); start poses in free
+//     space with at least min_hit_fraction of the beams hitting a wall;
+//  2. tracking: RMS and maximum error along a `drive`-metre wander (a scan every 0.25 m,
+//     odometry noise), beside dead reckoning from the same odometry (the baseline).
+//
+// Everything is seeded (TrialSettings::seed): the same settings give the same trials.
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "client/sim/laser_simulator.h"
+#include "client/localization/particle_filter.h"
+#include "common/map/map.h"
+#include "common/raycast/ray_caster.h"
+
+namespace fleetmap::localization {
+
+struct TrialSettings {
+  ParticleFilterOptions filter;  // the configuration under test
+  LaserSimulatorOptions laser;
+  int trials = 100;
+  int updates = 10;
+  double global_step = 0.5;  // metres between scans during global localization
+  // Global localization starts with a look around, as SimRobot's does: the first
+  // look_around steps turn in place by look_around_turn (0: wander from the start).
+  int look_around = 6;
+  double look_around_turn = deg2rad(60.0);
+  double drive = 200;        // metres of the tracking drive
+  double min_hit_fraction = 0.5;
+  double compass_sd = deg2rad(1.0);  // the compass's own error (clamped to +-3 degrees)
+  uint64_t seed = 1;
+  std::FILE* per_trial = nullptr;  // a line per global trial (start, outcome) when set
+};
+
+struct GlobalResult {
+  int trials = 0, converged = 0;
+  std::vector<int> first_within;    // update at which the estimate first got within bounds
+  std::vector<double> final_error;  // metres, per trial
+  double seconds = 0;               // all trials, without setup
+  double setup_seconds = 0;         // once per map: the global search's likelihood field
+};
+
+struct TrackResult {
+  double rms = 0, max = 0, rms_theta = 0, dead_reckoning_rms = 0, dead_reckoning_final = 0;
+  double driven = 0, mean_particles = 0, seconds = 0;
+  int updates = 0;
+};
+
+GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s);
+TrackResult run_tracking_trial(const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s,
+                               bool adaptive);
+
+// The presets by name: "seed" (ParticleFilterOptions::seed_model), "robust", "search"
+// (robust_search, the robot's default); nullopt for another name.
+std::optional<ParticleFilterOptions> preset(const std::string& name);
+const std::vector<std::string>& preset_names();
+
+// An AMRL map (*.vectormap.txt) or a seed-format one.
+Map load_map_file(const std::string& path);
+
+// The report: a header per map, then per preset its global and tracking lines (the
+// settings' filter replaced by the preset, keeping NP and threads).
+void report_map_header(std::FILE* out, const std::string& path, const Map& map, const TrialSettings& s);
+void report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s,
+                   const std::string& name, bool global, bool tracking);
+
+}  // namespace fleetmap::localization

@@ -1,0 +1,181 @@
+// fleetmap-robot: a simulated robot that speaks RR/SA with its own account (SPEC 6).
+// Parses options and runs client/sim/SimRobot; with --trials, runs the localization
+// trials of bench-localization instead (client/sim/localization_trials.h), no
+// database needed.
+#include <csignal>
+#include <unistd.h>
+
+#include <fstream>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <spdlog/spdlog.h>
+
+#include "client/sim/localization_trials.h"
+#include "client/robot_client.h"
+#include "client/sim/sim_robot.h"
+#include "common/io/amrl_import.h"
+#include "common/raycast/grid_ray_caster.h"
+#include "common/io/seed_format.h"
+#include "protocol/connection.h"
+
+namespace {
+std::atomic<bool> g_stop{false};
+extern "C" void on_signal(int) { g_stop = true; }
+
+// --trials: the report of bench-localization through the same runner, with the robot's
+// laser and particle count. Returns the exit code.
+int run_trials(int trials, std::vector<std::string> maps, const std::string& presets, bool skip_tracking,
+               int look_around, const fleetmap::SimRobotOptions& o) {
+  namespace loc = fleetmap::localization;
+  loc::TrialSettings s;
+  s.trials = trials;
+  s.updates = 10;  // the criterion: within 10 updates
+  s.look_around = look_around;
+  s.seed = o.seed;
+  s.laser = o.laser;
+  s.filter.particles = o.global_particles;
+  s.filter.beams = o.laser.beams;
+  s.filter.fov = o.laser.fov;
+  s.filter.laser = {o.laser_height, 15.0};
+  std::vector<std::string> names;
+  for (size_t at = 0; at <= presets.size();) {
+    const size_t comma = std::min(presets.find(',', at), presets.size());
+    names.push_back(presets.substr(at, comma - at));
+    at = comma + 1;
+  }
+  for (const std::string& n : names)
+    if (!loc::preset(n)) {
+      std::cerr << "--presets: expected seed, robust or search, got " << n << "\n";
+      return 64;
+    }
+  if (maps.empty()) maps = {"maps/amrl/GDC1.vectormap.txt", "maps/amrl/UT_Campus.vectormap.txt"};
+  try {
+    for (const std::string& path : maps) {
+      const fleetmap::Map map = loc::load_map_file(path);
+      std::shared_ptr<const fleetmap::RayCaster> world = std::make_shared<fleetmap::GridRayCaster>(map, s.filter.laser);
+      loc::report_map_header(stdout, path, map, s);
+      for (const std::string& n : names) loc::report_preset(stdout, map, world, s, n, true, !skip_tracking);
+    }
+  } catch (const fleetmap::MapFormatError& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "fleetmap-robot: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace fleetmap;
+  CLI::App app{"fleetmap-robot: a simulated robot (differential drive, noisy odometry, 2D laser, compass) that "
+               "registers with the fleetmap server, localizes on the maps it receives, reports its pose at 3 Hz "
+               "and drives to the goals operators give it."};
+  std::optional<std::string> config, host, user, password_file, world;
+  std::optional<unsigned> port;
+  std::vector<double> start;
+  double duration = 1e9;
+  SimRobotOptions o;
+  long long magic = 0;
+  std::string log_level = "info";
+  app.add_option("--config", config, "config file (the [robot] section: user, password or password_file)");
+  app.add_option("--host", host, "database host");
+  app.add_option("--port", port, "database TCP port");
+  app.add_option("--user", user, "the robot's account");
+  app.add_option("--password-file", password_file, "file holding the account's password")->check(CLI::ExistingFile);
+  app.add_option("--world", world, "ground-truth map file (seed or AMRL); default: the map the server sends on Ready");
+  app.add_option("--start", start, "true start pose X Y THETA (m, m, rad); required unless --trials")->expected(3);
+  app.add_option("--duration", duration, "stop after this many seconds");
+  app.add_option("--laser-height", o.laser_height, "laser mounting height hL (m)")->capture_default_str();
+  app.add_option("--beams", o.laser.beams, "laser beams NL")->capture_default_str();
+  app.add_option("--laser-sigma", o.laser.sigma, "laser noise sigma_L (m)")->capture_default_str();
+  app.add_option("--people", o.laser.people, "unmodelled obstacles (people) per scan")->capture_default_str();
+  app.add_option("--particles", o.global_particles, "particles for global localization (NP)")->capture_default_str();
+  app.add_option("--tracking-particles", o.tracking_particles, "max particles while tracking (KLD)")->capture_default_str();
+  app.add_option("--speed", o.pursuit.max_speed, "max speed (m/s)")->capture_default_str();
+  app.add_flag("--zoom", o.zoom, "keep a map window around the robot (GetMap) instead of the whole map");
+  app.add_option("--zoom-window", o.zoom_options.window_m, "zoom window side (m)")->capture_default_str();
+  app.add_option("--seed", o.seed, "random seed")->capture_default_str();
+  int max_updates = 60;
+  bool force_global = false;
+  app.add_flag("--global", force_global, "localize globally even when an operator set an initial pose");
+  app.add_option("--localize-updates", max_updates, "scans allowed for global localization")->capture_default_str();
+  app.add_option("--magic", magic, "magic of the Ready (default: the process id)");
+  app.add_option("--log-level", log_level, "trace, debug, info, warn, error")->capture_default_str();
+  int trials = 0;
+  std::vector<std::string> map_files;
+  std::string presets = "seed,search";
+  bool skip_tracking = false;
+  app.add_option("--trials", trials,
+                 "run N global localization trials per map (and a 200 m tracking run) on simulated sensors, print "
+                 "the report of bench-localization and exit; no database");
+  app.add_option("--map-file", map_files, "maps for --trials (AMRL .vectormap.txt or seed .map); default "
+                                          "maps/amrl/GDC1 and UT_Campus");
+  app.add_option("--presets", presets, "filter presets for --trials, comma-separated: seed (the baseline), robust, "
+                                       "search (the robot's)")->capture_default_str();
+  app.add_flag("--skip-tracking", skip_tracking, "--trials: global localization only");
+  int look_around = fleetmap::localization::TrialSettings{}.look_around;
+  app.add_option("--look-around", look_around,
+                 "--trials: scans turning 60 degrees in place before wandering (0: wander from the first)")
+      ->capture_default_str();
+  app.footer("Exit codes: 0 ok, 1 failure (database, server), 2 bad input, 5 localization failed, 64 usage.");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 64;
+  }
+  if (trials > 0) return run_trials(trials, map_files, presets, skip_tracking, look_around, o);
+  if (start.size() != 3) {
+    std::cerr << "--start X Y THETA is required (or --trials N)\n";
+    return 64;
+  }
+  spdlog::set_level(spdlog::level::from_str(log_level));
+  spdlog::set_pattern("%H:%M:%S.%e %^%-5l%$ [robot] %v");
+  std::signal(SIGTERM, on_signal);
+  std::signal(SIGINT, on_signal);
+  try {
+    DbSettings s = load_settings(Role::Robot, config);
+    if (host) { s.host = *host; s.socket.clear(); }
+    if (port) s.port = *port;
+    if (user) s.user = *user;
+    if (password_file) {
+      std::ifstream in(*password_file);
+      std::getline(in, s.password);
+    }
+    s.socket.clear();  // robots connect over the network, as real ones do
+    RobotClient client(s);
+    const RobotSession session = client.ready(magic ? magic : getpid());
+    spdlog::info("registered as robot {} ({}); map of {} segments", session.robot_id, s.user, session.map.segment_count());
+    client.start_alive(std::chrono::milliseconds(static_cast<int>(session.alive_period_s * 1000)));
+    Map truth = session.map;
+    if (world) {
+      const bool amrl = world->size() > 14 && world->substr(world->size() - 14) == ".vectormap.txt";
+      truth = amrl ? read_amrl_file(*world, AmrlOptions{}) : read_seed_file(*world);
+    }
+    SimRobot robot(client, truth, {start[0], start[1], start[2]}, session.map, o);
+    // An operator's initial pose (GetPosIni) starts tracking from it, as with AMCL's
+    // initial pose; without one, or with --global, the robot localizes globally.
+    const auto ini_id = client.send(RequestOp::GetPosIni);
+    const auto ini = client.await(ini_id, 1);
+    if (ini[0].op == "SetPosIni" && !force_global) {
+      const SetPoseParams p = decode_set_pose(ini[0].params);
+      spdlog::info("tracking from the operator's initial pose ({:.2f}, {:.2f})", p.x, p.y);
+      robot.start_tracking({p.x, p.y, p.theta.value_or(0)}, 0.3, p.theta ? 0.05 : 3.2);
+    } else if (!robot.localize(max_updates)) {
+      spdlog::error("global localization failed; set an initial pose (fleetmap pose-ini) and restart");
+      return 5;
+    }
+    robot.run(g_stop, duration);
+    spdlog::info("stopped: {} goal(s) reached", robot.goals_reached());
+    return 0;
+  } catch (const MapFormatError& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "fleetmap-robot: " << e.what() << "\n";
+    return 1;
+  }
+}

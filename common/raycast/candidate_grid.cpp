@@ -1,0 +1,110 @@
+#include "common/raycast/candidate_grid.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/geometry/rect_distance.h"
+
+namespace fleetmap {
+namespace {
+
+Rect segment_box(const RaySegment& s) {
+  const Point b = s.a + s.e;
+  return {std::min(s.a.x, b.x), std::min(s.a.y, b.y), std::max(s.a.x, b.x), std::max(s.a.y, b.y)};
+}
+
+}  // namespace
+
+size_t CandidateGrid::estimate_bytes(const LaserObstacles& obstacles, double cell, double rmax) {
+  // Each wall's bounding box grown by rmax, in cells: an upper bound of its entries.
+  double entries = 0;
+  auto add = [&](const Rect& r) {
+    entries += ((r.xmax - r.xmin + 2 * rmax) / cell + 2) * ((r.ymax - r.ymin + 2 * rmax) / cell + 2);
+  };
+  for (const RaySegment& s : obstacles.walls) add(segment_box(s));
+  for (const SpecialObstacle& sp : obstacles.specials) add(sp.bounds);
+  const Rect& b = obstacles.bounds;
+  const double cells = obstacles.obstacles.empty()
+                           ? 0
+                           : ((b.xmax - b.xmin + 2 * rmax) / cell + 3) * ((b.ymax - b.ymin + 2 * rmax) / cell + 3);
+  return static_cast<size_t>(std::min(sizeof(Candidate) * entries + sizeof(uint32_t) * cells, 1e18));
+}
+
+CandidateGrid::CandidateGrid(const LaserObstacles& obstacles, double cell, double rmax, size_t max_bytes)
+    : wall_count_(static_cast<uint32_t>(obstacles.walls.size())) {
+  if (obstacles.obstacles.empty()) return;
+  while (estimate_bytes(obstacles, cell, rmax) > max_bytes) cell *= 2;
+  cell_ = cell;
+  inv_cell_ = 1 / cell;
+  const double reach = rmax + kPad;
+  const Rect& b = obstacles.bounds;
+  corner_ = {b.xmin - reach - cell_, b.ymin - reach - cell_};
+  nx_ = static_cast<long>(std::floor((b.xmax - b.xmin + 2 * reach) * inv_cell_)) + 3;
+  ny_ = static_cast<long>(std::floor((b.ymax - b.ymin + 2 * reach) * inv_cell_)) + 3;
+
+  struct Entry {
+    uint32_t cell;
+    float key;  // distance from the cell's centre: nearest first
+    uint32_t id;
+  };
+  // From any point of the cell, a thing at `key` from its centre is at least this far;
+  // 1e-5 m covers the float's rounding (1e-6 relative at the few tens of metres of rmax).
+  const double half_diagonal = cell_ * std::sqrt(0.5);
+  auto lower_bound = [&](float key) {
+    const double v = key - half_diagonal - 1e-5 * (1 + key);
+    return v > 0 ? std::nextafter(static_cast<float>(v), 0.0f) : 0.0f;
+  };
+  std::vector<Entry> entries;
+  entries.reserve(estimate_bytes(obstacles, cell_, rmax) / sizeof(Candidate));  // an upper bound
+  auto cell_rect = [&](long ix, long iy) {
+    const double x = corner_.x + ix * cell_, y = corner_.y + iy * cell_;
+    return Rect{x, y, x + cell_, y + cell_};
+  };
+  // The cells near r's box that dist2_to_cell puts within reach, keyed by dist2_to_centre.
+  auto visit = [&](const Rect& r, uint32_t id, auto&& dist2_to_cell, auto&& dist2_to_centre) {
+    const long x0 = std::max(0L, static_cast<long>(std::floor((r.xmin - reach - corner_.x) * inv_cell_)));
+    const long x1 = std::min(nx_ - 1, static_cast<long>(std::floor((r.xmax + reach - corner_.x) * inv_cell_)));
+    const long y0 = std::max(0L, static_cast<long>(std::floor((r.ymin - reach - corner_.y) * inv_cell_)));
+    const long y1 = std::min(ny_ - 1, static_cast<long>(std::floor((r.ymax + reach - corner_.y) * inv_cell_)));
+    for (long iy = y0; iy <= y1; ++iy)
+      for (long ix = x0; ix <= x1; ++ix) {
+        const Rect c = cell_rect(ix, iy);
+        if (dist2_to_cell(c) > reach * reach) continue;
+        const Point centre{(c.xmin + c.xmax) / 2, (c.ymin + c.ymax) / 2};
+        entries.push_back(
+            {static_cast<uint32_t>(iy * nx_ + ix), static_cast<float>(std::sqrt(dist2_to_centre(centre))), id});
+      }
+  };
+  for (uint32_t i = 0; i < wall_count_; ++i) {
+    const Point a = obstacles.walls[i].a, bb = a + obstacles.walls[i].e;
+    visit(
+        segment_box(obstacles.walls[i]), i, [&](const Rect& c) { return squared_distance(a, bb, c); },
+        [&](Point p) { return point_segment_distance2(p, a, bb); });
+  }
+  for (uint32_t k = 0; k < obstacles.specials.size(); ++k) {
+    const Rect& r = obstacles.specials[k].bounds;
+    visit(
+        r, wall_count_ + k, [&](const Rect& c) { return squared_distance(r, c); },
+        [&](Point p) { return squared_distance(p, r); });
+  }
+  // Counting sort by cell, then each cell's short list by distance (ties by id, so
+  // the build is deterministic).
+  offsets_.assign(cells() + 1, 0);
+  for (const Entry& e : entries) ++offsets_[e.cell + 1];
+  for (size_t c = 0; c < cells(); ++c) offsets_[c + 1] += offsets_[c];
+  std::vector<std::pair<float, uint32_t>> sorted(entries.size());
+  {
+    std::vector<uint32_t> next(offsets_.begin(), offsets_.end() - 1);
+    for (const Entry& e : entries) sorted[next[e.cell]++] = {e.key, e.id};
+  }
+  entries = {};
+  for (size_t c = 0; c < cells(); ++c) std::sort(sorted.begin() + offsets_[c], sorted.begin() + offsets_[c + 1]);
+  list_.reserve(sorted.size());
+  for (const auto& [key, id] : sorted) list_.push_back({id, lower_bound(key)});
+}
+
+size_t CandidateGrid::memory_bytes() const {
+  return sizeof(*this) + offsets_.capacity() * sizeof(uint32_t) + list_.capacity() * sizeof(Candidate);
+}
+
+}  // namespace fleetmap

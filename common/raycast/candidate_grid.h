@@ -1,0 +1,59 @@
+#pragma once
+// For each cell of a uniform grid, every obstacle that can stop a laser ray of length
+// rmax cast from anywhere in the cell (its "potentially visible set"): the walls whose
+// distance to the cell is at most rmax, and the stairs and ramps whose bounding box is.
+// One list read per scan replaces a walk through many cells per ray, which is what
+// costs on random poses: the list is one or two cache lines, the walls it names are a
+// small array that stays in cache.
+//
+// Ids below wall_count() index LaserObstacles::walls; the others, minus wall_count(),
+// index LaserObstacles::specials. Each list is ordered nearest first, with a distance
+// no point of the cell is nearer than: a single ray stops reading the list once that
+// passes its nearest hit, and a scan meets the walls that end most rays first.
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "common/raycast/ray_rules.h"
+
+namespace fleetmap {
+
+class CandidateGrid {
+ public:
+  static constexpr double kPad = 1e-6;  // metres added to rmax: immune to rounding
+
+  struct Candidate {
+    uint32_t id;
+    float nearest;  // metres: no point of the cell is nearer to it (rounded down)
+  };
+
+  // cell: side in metres, doubled until the lists fit in max_bytes.
+  CandidateGrid(const LaserObstacles& obstacles, double cell, double rmax, size_t max_bytes);
+
+  // The candidates for a ray from p (empty outside the grid: nothing is within rmax).
+  std::span<const Candidate> near(Point p) const {
+    const double fx = (p.x - corner_.x) * inv_cell_, fy = (p.y - corner_.y) * inv_cell_;
+    if (!(fx >= 0 && fy >= 0 && fx < nx_ && fy < ny_)) return {};
+    const size_t c = static_cast<size_t>(fy) * nx_ + static_cast<size_t>(fx);
+    return {list_.data() + offsets_[c], list_.data() + offsets_[c + 1]};
+  }
+
+  uint32_t wall_count() const { return wall_count_; }
+  double cell() const { return cell_; }
+  size_t cells() const { return static_cast<size_t>(nx_) * ny_; }
+  size_t entries() const { return list_.size(); }
+  size_t memory_bytes() const;
+  // Bytes the lists would take with this cell size (what the constructor checks).
+  static size_t estimate_bytes(const LaserObstacles& obstacles, double cell, double rmax);
+
+ private:
+  double cell_ = 1, inv_cell_ = 1;
+  Point corner_;
+  long nx_ = 0, ny_ = 0;
+  uint32_t wall_count_ = 0;
+  std::vector<uint32_t> offsets_;  // cells() + 1
+  std::vector<Candidate> list_;
+};
+
+}  // namespace fleetmap

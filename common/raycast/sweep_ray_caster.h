@@ -1,0 +1,54 @@
+#pragma once
+// The fast RayCaster: a scan reads the candidate list of its origin's cell
+// (common/raycast/candidate_grid.h: every wall, stair and ramp within rmax of the cell) and
+// sweeps it wall by wall: each wall is tested, with the shared exact test
+// (common/raycast/ray_segment.h), only against the beams inside the angle it subtends from the
+// origin, and only where it is nearer than the range found so far for that beam.
+// Stairs and ramps are judged as a whole against every beam (common/raycast/ray_rules.h).
+//
+// This is the seed's idea (seed 000 section 4.1: cull obstacles against the scanner's
+// circle once per scan, then test the rest) with the culling precomputed per cell and
+// refined per beam. Results equal SeedRayCaster's: the same test on a superset of the
+// walls that can be hit (tests/common/raycast/ray_caster_equivalence_test.cpp).
+//
+// Memory grows with rmax^2 times the walls' density; the cell size is doubled until
+// the lists fit in SweepOptions::max_bytes. make_fast_ray_caster() picks GridRayCaster
+// (grid_ray_caster.h, memory independent of rmax) when even that does not fit.
+#include <cstddef>
+#include <memory>
+
+#include "common/raycast/candidate_grid.h"
+#include "common/map/map.h"
+#include "common/raycast/ray_caster.h"
+#include "common/raycast/ray_rules.h"
+
+namespace fleetmap {
+
+struct SweepOptions {
+  double cell = 4.0;             // metres (bench-raycast compares sizes)
+  size_t max_bytes = 64u << 20;  // budget of the candidate lists
+};
+
+class SweepRayCaster : public RayCaster {
+ public:
+  // Throws std::invalid_argument when a ramp's surface encoding is wrong.
+  SweepRayCaster(const Map& map, RayCasterOptions options, SweepOptions sweep = {});
+
+  double cast_direction(Point origin, Point dir) const override;
+  void cast_scan(Point origin, double theta, const std::vector<double>& relative_angles, double* ranges) const override;
+  const RayCasterOptions& options() const override { return options_; }
+
+  size_t memory_bytes() const;
+  const CandidateGrid& candidates() const { return candidates_; }
+
+ private:
+  RayCasterOptions options_;
+  LaserObstacles obstacles_;
+  CandidateGrid candidates_;
+};
+
+// The fast caster for a map (what the robot uses): SweepRayCaster, or GridRayCaster
+// when the candidate lists would not fit.
+std::unique_ptr<RayCaster> make_fast_ray_caster(const Map& map, RayCasterOptions options);
+
+}  // namespace fleetmap

@@ -1,0 +1,75 @@
+#include "server/cli/map_source.h"
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+#include "common/io/amrl_import.h"
+#include "common/io/scene_geojson.h"
+#include "common/slicing/scene_laser.h"
+#include "common/io/seed_format.h"
+#include "protocol/map_store.h"
+#include "protocol/scene_store.h"
+
+namespace fleetmap {
+
+bool is_amrl_file(const std::string& file) {
+  const std::string suffix = ".vectormap.txt";
+  return file.size() >= suffix.size() && file.compare(file.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+Map load_map_source(const std::string& name, const std::string& file, CliContext& ctx) {
+  if (file.empty()) return MapStore(ctx.connection()).load(name);
+  return is_amrl_file(file) ? read_amrl_file(file, AmrlOptions{}) : read_seed_file(file);
+}
+
+void add_object_source_options(CLI::App& cmd, ObjectSource& source) {
+  cmd.add_option("--objects", source.objects_file,
+                 "with --file: the map's objects (GeoJSON, docs/semantic-layer.md); a stored map's come from the "
+                 "database");
+  cmd.add_flag("--no-objects", source.no_objects, "the bare segments, without the map's objects");
+}
+
+Scene load_scene_source(const std::string& name, const std::string& file, const ObjectSource& source,
+                        CliContext& ctx) {
+  if (!source.objects_file.empty() && source.no_objects)
+    throw std::invalid_argument("expected --objects F or --no-objects, not both");
+  if (!source.objects_file.empty() && file.empty())
+    throw std::invalid_argument("expected --objects only with --file: a stored map's objects are in the database");
+  if (source.no_objects) return {};
+  if (!file.empty()) {
+    if (source.objects_file.empty()) return {};
+    std::ifstream in(source.objects_file, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read '" + source.objects_file + "'");
+    std::ostringstream text;
+    text << in.rdbuf();
+    try {
+      return read_scene_geojson(text.str());
+    } catch (const SceneFormatError& e) {
+      throw std::invalid_argument(source.objects_file + ": " + e.what());
+    }
+  }
+  return SceneStore(ctx.connection()).load(name);
+}
+
+Map load_map_at_height(const std::string& name, const std::string& file, const ObjectSource& source,
+                       double laser_height, CliContext& ctx, size_t* objects) {
+  const Scene scene = load_scene_source(name, file, source, ctx);  // argument errors first
+  const Map map = load_map_source(name, file, ctx);
+  Map seen = with_objects_at_height(map, scene, laser_height);
+  if (objects) *objects = seen.obstacles.size() - map.obstacles.size();
+  return seen;
+}
+
+void write_output(const std::string& text, const std::string& file) {
+  if (file.empty() || file == "-") {
+    std::cout << text;
+    return;
+  }
+  std::ofstream out(file, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write '" + file + "'");
+}
+
+}  // namespace fleetmap

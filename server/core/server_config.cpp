@@ -1,0 +1,49 @@
+#include "server/core/server_config.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace fleetmap {
+namespace {
+
+double number(const std::string& key, const std::string& v, bool zero_ok) {
+  size_t used = 0;
+  double d = 0;
+  try {
+    d = std::stod(v, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != v.size() || !std::isfinite(d) || d < 0 || (d == 0 && !zero_ok))
+    throw std::invalid_argument("[server] " + key + ": expected a " + (zero_ok ? "non-negative" : "positive") +
+                                " number, got '" + v + "'");
+  return d;
+}
+
+double positive(const std::string& key, const std::string& v) { return number(key, v, false); }
+
+}  // namespace
+
+void ServerConfig::apply(const std::map<std::string, std::string>& s) {
+  for (const auto& [k, v] : s) {
+    if (k == "alive_period_s") alive_period_s = positive(k, v);
+    else if (k == "lost_after_periods") lost_after_periods = positive(k, v);
+    else if (k == "workers") workers = static_cast<int>(positive(k, v));
+    else if (k == "poll_max_ms") poll_max_ms = positive(k, v);
+    else if (k == "batch_robots") batch_robots = static_cast<size_t>(positive(k, v));
+    else if (k == "batch_requests") batch_requests = static_cast<size_t>(positive(k, v));
+    else if (k == "max_full_map_segments") max_full_map_segments = static_cast<size_t>(positive(k, v));
+    else if (k == "ready_window_m") ready_window_m = positive(k, v);
+    else if (k == "max_window_m") max_window_m = positive(k, v);
+    else if (k == "max_image_bytes") max_image_bytes = static_cast<size_t>(positive(k, v));
+    else if (k == "goal_tolerance_m") goal_tolerance_m = positive(k, v);
+    else if (k == "robot_radius_m") robot_radius_m = positive(k, v);
+    else if (k == "body_height_m") body_height_m = positive(k, v);
+    else if (k == "object_ttl_s") object_ttl_s = positive(k, v);
+    else if (k == "commit_delay_ms") commit_delay_ms = number(k, v, true);
+    else if (k == "lock_wait_timeout_s") lock_wait_timeout_s = static_cast<int>(positive(k, v));
+    else throw std::invalid_argument("[server] unknown setting '" + k + "'");
+  }
+}
+
+}  // namespace fleetmap

@@ -1,0 +1,93 @@
+// LaserSimulator (client/sim/laser_simulator.h): true ranges plus N(0, sigma_L),
+// RMAX kept for beams that hit nothing, people shortening contiguous beams.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "client/sim/laser_simulator.h"
+#include "common/raycast/grid_ray_caster.h"
+#include "tests/client/test_maps.h"
+
+namespace fleetmap::localization {
+namespace {
+
+std::shared_ptr<const RayCaster> room_caster() {
+  return std::make_shared<GridRayCaster>(test::room_map(), RayCasterOptions{0.3, 15.0});
+}
+
+TEST(LaserSimulator, TrueScanIsTheCastersScan) {
+  const auto world = room_caster();
+  LaserSimulator laser(world, {}, 1);
+  ASSERT_EQ(laser.beam_angles().size(), 131u);
+  EXPECT_NEAR(laser.beam_angles().front(), -kPi / 2, 1e-12);
+  EXPECT_NEAR(laser.beam_angles().back(), kPi / 2, 1e-12);
+  // From (2, 2) facing +x the middle beam meets the L's wall at x = 4.
+  const std::vector<double> r = laser.true_scan({2, 2.5, 0});
+  EXPECT_NEAR(r[65], 2.0, 1e-9);
+  EXPECT_NEAR(r[0], 2.5, 1e-9);  // facing -y: the wall y = 0
+}
+
+TEST(LaserSimulator, NoiseHasSigmaL) {
+  const auto world = room_caster();
+  LaserSimulator laser(world, {}, 2);
+  const Pose p{10, 3, 0.3};
+  const std::vector<double> truth = laser.true_scan(p);
+  double sum = 0, sum_sq = 0;
+  int n = 0;
+  for (int k = 0; k < 200; ++k) {
+    const std::vector<double> r = laser.scan(p);
+    for (size_t j = 0; j < r.size(); ++j) {
+      const double d = r[j] - truth[j];
+      sum += d;
+      sum_sq += d * d;
+      ++n;
+    }
+  }
+  EXPECT_NEAR(sum / n, 0.0, 0.002);
+  EXPECT_NEAR(std::sqrt(sum_sq / n), 0.05, 0.002);  // seed 000 section 4.1: sigma_L 5 cm
+}
+
+TEST(LaserSimulator, BeamsThatHitNothingReturnRmax) {
+  // A single wall: the beams that miss it stay at RMAX exactly.
+  Map m;
+  m.border = Border::from_rect({-20, -20, 20, 20});
+  Obstacle o;
+  o.id = 1;
+  o.type = ShapeType::OpenPolygon;
+  o.segments = {test::wall({3, -1}, {3, 1})};
+  m.obstacles = {o};
+  m.compute_bounds();
+  LaserSimulator laser(std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0}), {}, 3);
+  const std::vector<double> r = laser.scan({0, 0, 0});
+  EXPECT_EQ(r[0], 15.0);
+  EXPECT_EQ(r[130], 15.0);
+  EXPECT_NEAR(r[65], 3.0, 0.3);
+}
+
+TEST(LaserSimulator, PeopleShortenContiguousBeams) {
+  const auto world = room_caster();
+  LaserSimulatorOptions o;
+  o.sigma = 0;
+  o.people = 3;
+  LaserSimulator laser(world, o, 4);
+  const Pose p{10, 3, kPi / 2};
+  const std::vector<double> truth = laser.true_scan(p);
+  int shorter = 0;
+  for (int k = 0; k < 50; ++k) {
+    const std::vector<double> r = laser.scan(p);
+    for (size_t j = 0; j < r.size(); ++j) {
+      EXPECT_LE(r[j], truth[j] + 1e-12);
+      if (r[j] < truth[j] - 1e-9) {
+        ++shorter;
+        EXPECT_GE(r[j], 0.5);  // min_person_range
+      }
+    }
+  }
+  // A person 0.5 m wide covers at least one beam (1.4 degrees apart) even at 10 m.
+  EXPECT_GT(shorter, 150);
+}
+
+}  // namespace
+}  // namespace fleetmap::localization
