@@ -1,5 +1,5 @@
 #pragma once
-// The scene the server serves robots (issue 8): a map's imported objects plus the robots'
+// The scene the server serves robots (seed 002): a map's imported objects plus the robots'
 // observations that have not expired, its avoided areas and bounds. SceneStore::load
 // reads what an import wrote (observations left out) in a transaction of its own; these
 // read with plain SELECTs in the caller's transaction (the server's batch), so they can

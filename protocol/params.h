@@ -32,7 +32,7 @@ enum class MapEncoding { Seed, SeedCompress };
 std::string_view name(MapEncoding e);
 std::optional<MapEncoding> parse_map_encoding(std::string_view s);
 
-// What GetMap's SetMap holds (issue 8, seed 002 section 3.4, docs/wire-format.md):
+// What GetMap's SetMap holds (seed 002 section 3.4, docs/wire-format.md):
 //   TwoD         "2d" (the default): the map the robot's laser sees, i.e. the segment map
 //                sliced at its profile's laser height plus the objects seen there.
 //   TwoAndHalfD  "2.5d": the segments unsliced, with their heights, plus the objects
@@ -73,8 +73,8 @@ struct SetMapParams {
   double border[4] = {0, 0, 0, 0};
   size_t obstacles = 0, segments = 0;
   MapEncoding encoding = MapEncoding::Seed;
-  // Written only when set, so that a robot without a profile gets the answer it got
-  // before issue 8: the laser height the map is sliced at, and "2.5d" (GetMap mode).
+  // Written only when set, so that a robot without a profile gets the plain SetMap of
+  // SPEC 5.4: the laser height the map is sliced at, and "2.5d" (GetMap mode).
   std::optional<double> laser_height;
   std::optional<MapMode> mode;
 };

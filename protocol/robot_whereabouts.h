@@ -1,5 +1,5 @@
 #pragma once
-// Where an operator's command finds a robot (issue 8, `fleetmap goal ROBOT --near TAG`):
+// Where an operator's command finds a robot (`fleetmap goal ROBOT --near TAG`):
 // its map, the last pose it reported (robots.x, y), and the initial pose an operator gave
 // it (robots.ini_x, ini_y, `fleetmap pose-ini`), and the profile values its plans use.
 #include <optional>

@@ -1,5 +1,5 @@
 #pragma once
-// The semantic layer in the database (issue 8): tables tags, env_objects,
+// The semantic layer in the database (seed 002): tables tags, env_objects,
 // object_elements (footprint POLYGON, spatial index), avoided_areas (POLYGON, spatial
 // index) and map_bounds, sql/60_semantic.sql. A map's Scene (common/scene/scene.h) is found by
 // the map's name; deleting or replacing the map deletes its scene (foreign-key cascade).

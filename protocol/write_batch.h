@@ -1,5 +1,5 @@
 #pragma once
-// The server's writes of one batch of requests, sent together (issue 4: throughput).
+// The server's writes of one batch of requests, sent together (SPEC 8: throughput).
 // Handlers describe what a request writes (answers, trajectory points, GPS fixes) in a
 // RequestWrites; the loop adds it to the batch once the request succeeded, with each
 // claimed robot's final row, and flush() sends every row as multi-row statements and the

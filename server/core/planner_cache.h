@@ -1,5 +1,5 @@
 #pragma once
-// One MapPlanner per map, robot profile and scene (issue 8): building the clearance index
+// One MapPlanner per map, robot profile and scene (seed 004): building the clearance index
 // costs far more than a query, so planners are kept and shared by the workers.
 //
 //   key      (map id, radius, body height, climbs stairs): a map never changes under its

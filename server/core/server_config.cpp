@@ -22,26 +22,37 @@ double number(const std::string& key, const std::string& v, bool zero_ok) {
 
 double positive(const std::string& key, const std::string& v) { return number(key, v, false); }
 
+// Counts (threads, robots, bytes): a whole number, so that "1.5" workers is refused
+// rather than cut to 1.
+size_t count(const std::string& key, const std::string& v, double most = 1e15) {
+  const double d = number(key, v, false);
+  if (d != std::floor(d) || d > most)
+    throw std::invalid_argument("[server] " + key + ": expected a positive whole number" +
+                                (most < 1e15 ? " up to " + std::to_string(static_cast<long long>(most)) : "") +
+                                ", got '" + v + "'");
+  return static_cast<size_t>(d);
+}
+
 }  // namespace
 
 void ServerConfig::apply(const std::map<std::string, std::string>& s) {
   for (const auto& [k, v] : s) {
     if (k == "alive_period_s") alive_period_s = positive(k, v);
     else if (k == "lost_after_periods") lost_after_periods = positive(k, v);
-    else if (k == "workers") workers = static_cast<int>(positive(k, v));
+    else if (k == "workers") workers = static_cast<int>(count(k, v, 1024));
     else if (k == "poll_max_ms") poll_max_ms = positive(k, v);
-    else if (k == "batch_robots") batch_robots = static_cast<size_t>(positive(k, v));
-    else if (k == "batch_requests") batch_requests = static_cast<size_t>(positive(k, v));
-    else if (k == "max_full_map_segments") max_full_map_segments = static_cast<size_t>(positive(k, v));
+    else if (k == "batch_robots") batch_robots = count(k, v);
+    else if (k == "batch_requests") batch_requests = count(k, v);
+    else if (k == "max_full_map_segments") max_full_map_segments = count(k, v);
     else if (k == "ready_window_m") ready_window_m = positive(k, v);
     else if (k == "max_window_m") max_window_m = positive(k, v);
-    else if (k == "max_image_bytes") max_image_bytes = static_cast<size_t>(positive(k, v));
+    else if (k == "max_image_bytes") max_image_bytes = count(k, v);
     else if (k == "goal_tolerance_m") goal_tolerance_m = positive(k, v);
     else if (k == "robot_radius_m") robot_radius_m = positive(k, v);
     else if (k == "body_height_m") body_height_m = positive(k, v);
     else if (k == "object_ttl_s") object_ttl_s = positive(k, v);
     else if (k == "commit_delay_ms") commit_delay_ms = number(k, v, true);
-    else if (k == "lock_wait_timeout_s") lock_wait_timeout_s = static_cast<int>(positive(k, v));
+    else if (k == "lock_wait_timeout_s") lock_wait_timeout_s = static_cast<int>(count(k, v, 3600));
     else throw std::invalid_argument("[server] unknown setting '" + k + "'");
   }
 }

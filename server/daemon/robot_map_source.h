@@ -1,13 +1,13 @@
 #pragma once
-// The map each robot is served (issue 8, seed 004 section III.A): Ready's and GetMap's
+// The map each robot is served (seed 004 section III.A): Ready's and GetMap's
 // SetMap hold what the robot's laser sees, i.e. the stored segment map sliced at the
 // laser height of its profile (common/slicing/map_slice.h) plus the map's objects seen at that
 // height (common/slicing/scene_laser.h), cut to the window exactly as segments are
 // (common/map/map_window.h). The whole map equals `fleetmap map slice NAME --height H`.
 //
 // A robot without a laser height in its profile (robots.laser_height NULL) gets the
-// stored map as it is, without objects: the answer it got before issue 8, which its own
-// ray caster reads at whatever height its laser is (SPEC 6).
+// stored map as it is, without objects (the plain segment map of SPEC 5.4), which its
+// own ray caster reads at whatever height its laser is (SPEC 6).
 //
 // One instance per server process (shared()), used by every worker, three caches:
 //   slices   (map id, laser height) -> slice_at_height of the stored map. A replaced map

@@ -1,0 +1,118 @@
+// ServerConfig::apply (server/core/server_config.h): defaults, settings from the file's
+// [server] section, later settings (flags) over earlier ones, and bad values refused
+// with the key and what was expected.
+#include "server/core/server_config.h"
+
+#include <gtest/gtest.h>
+
+namespace fleetmap {
+namespace {
+
+std::string refusal(ServerConfig& c, const std::map<std::string, std::string>& s) {
+  try {
+    c.apply(s);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ServerConfig, DefaultsAreTheDocumentedOnes) {
+  // etc/fleetmap.conf.sample and fleetmap-server --help
+  const ServerConfig c;
+  EXPECT_EQ(c.alive_period_s, 1.0);
+  EXPECT_EQ(c.lost_after_periods, 5);
+  EXPECT_EQ(c.workers, 2);
+  EXPECT_EQ(c.poll_max_ms, 10);
+  EXPECT_EQ(c.batch_robots, 16u);
+  EXPECT_EQ(c.batch_requests, 32u);
+  EXPECT_EQ(c.max_full_map_segments, 20000u);
+  EXPECT_EQ(c.ready_window_m, 100);
+  EXPECT_EQ(c.max_window_m, 1000);
+  EXPECT_EQ(c.max_image_bytes, 8u * 1024 * 1024);
+  EXPECT_EQ(c.goal_tolerance_m, 0.5);
+  EXPECT_EQ(c.robot_radius_m, 0.3);
+  EXPECT_EQ(c.body_height_m, 1.0);
+  EXPECT_EQ(c.object_ttl_s, 300);
+  EXPECT_EQ(c.lock_wait_timeout_s, 1);
+  EXPECT_EQ(c.commit_delay_ms, 0);
+}
+
+TEST(ServerConfig, EveryKeyOfTheFileIsApplied) {
+  ServerConfig c;
+  c.apply({{"alive_period_s", "0.5"},     {"lost_after_periods", "3"},   {"workers", "4"},
+           {"poll_max_ms", "20"},         {"batch_robots", "8"},         {"batch_requests", "64"},
+           {"max_full_map_segments", "500"}, {"ready_window_m", "50"},   {"max_window_m", "200"},
+           {"max_image_bytes", "1024"},   {"goal_tolerance_m", "0.25"},  {"robot_radius_m", "0.4"},
+           {"body_height_m", "1.5"},      {"object_ttl_s", "60"},        {"lock_wait_timeout_s", "2"},
+           {"commit_delay_ms", "0"}});
+  EXPECT_EQ(c.alive_period_s, 0.5);
+  EXPECT_EQ(c.lost_after_periods, 3);
+  EXPECT_EQ(c.workers, 4);
+  EXPECT_EQ(c.poll_max_ms, 20);
+  EXPECT_EQ(c.batch_robots, 8u);
+  EXPECT_EQ(c.batch_requests, 64u);
+  EXPECT_EQ(c.max_full_map_segments, 500u);
+  EXPECT_EQ(c.ready_window_m, 50);
+  EXPECT_EQ(c.max_window_m, 200);
+  EXPECT_EQ(c.max_image_bytes, 1024u);
+  EXPECT_EQ(c.goal_tolerance_m, 0.25);
+  EXPECT_EQ(c.robot_radius_m, 0.4);
+  EXPECT_EQ(c.body_height_m, 1.5);
+  EXPECT_EQ(c.object_ttl_s, 60);
+  EXPECT_EQ(c.lock_wait_timeout_s, 2);
+  EXPECT_EQ(c.commit_delay_ms, 0);
+}
+
+TEST(ServerConfig, FlagsAppliedAfterTheFileOverrideItAndLeaveTheRest) {
+  // server_main: cfg.apply(file's [server]); cfg.apply(flags).
+  ServerConfig c;
+  c.apply({{"alive_period_s", "2"}, {"workers", "3"}});
+  c.apply({{"workers", "1"}});
+  EXPECT_EQ(c.workers, 1);
+  EXPECT_EQ(c.alive_period_s, 2);
+  EXPECT_EQ(c.batch_robots, 16u);
+}
+
+TEST(ServerConfig, AMalformedNumberIsRefusedNamingTheKeyAndWhatWasExpected) {
+  for (const char* v : {"abc", "", "1.5x", "-1", "0", "nan", "inf"}) {
+    ServerConfig c;
+    const std::string m = refusal(c, {{"alive_period_s", v}});
+    EXPECT_NE(m.find("[server] alive_period_s"), std::string::npos) << v << ": " << m;
+    EXPECT_NE(m.find("expected a positive number"), std::string::npos) << v << ": " << m;
+    EXPECT_NE(m.find("got '" + std::string(v) + "'"), std::string::npos) << v << ": " << m;
+    EXPECT_EQ(c.alive_period_s, 1.0) << v;
+  }
+}
+
+TEST(ServerConfig, ZeroIsAllowedOnlyWhereItMeansOff) {
+  ServerConfig c;
+  c.apply({{"commit_delay_ms", "0"}});
+  EXPECT_EQ(c.commit_delay_ms, 0);
+  const std::string m = refusal(c, {{"commit_delay_ms", "-5"}});
+  EXPECT_NE(m.find("commit_delay_ms: expected a non-negative number, got '-5'"), std::string::npos) << m;
+  EXPECT_NE(refusal(c, {{"workers", "0"}}).find("workers: expected a positive number"), std::string::npos);
+}
+
+TEST(ServerConfig, CountsMustBeWholeNumbers) {
+  for (const char* key : {"batch_robots", "batch_requests", "max_full_map_segments", "max_image_bytes"}) {
+    ServerConfig c;
+    const std::string m = refusal(c, {{key, "1.5"}});
+    EXPECT_EQ(m, "[server] " + std::string(key) + ": expected a positive whole number, got '1.5'") << key;
+  }
+  ServerConfig c;
+  EXPECT_EQ(refusal(c, {{"workers", "2.5"}}), "[server] workers: expected a positive whole number up to 1024, got '2.5'");
+  EXPECT_EQ(refusal(c, {{"workers", "5000"}}),
+            "[server] workers: expected a positive whole number up to 1024, got '5000'");
+  EXPECT_EQ(refusal(c, {{"lock_wait_timeout_s", "1e9"}}),
+            "[server] lock_wait_timeout_s: expected a positive whole number up to 3600, got '1e9'");
+  EXPECT_EQ(c.workers, 2);
+}
+
+TEST(ServerConfig, AnUnknownKeyIsRefusedByName) {
+  ServerConfig c;
+  EXPECT_EQ(refusal(c, {{"alive_period", "1"}}), "[server] unknown setting 'alive_period'");
+}
+
+}  // namespace
+}  // namespace fleetmap
