@@ -6,6 +6,7 @@
 #include "common/geometry/number_format.h"
 #include "protocol/connection.h"
 #include "protocol/sql_util.h"
+#include "protocol/task_lifecycle.h"
 
 namespace fleetmap {
 
@@ -115,14 +116,16 @@ std::vector<RobotStatus> FleetStore::status() {
     s.id = static_cast<unsigned>(sql::to_uint(r[0]));
     s.name = sql::to_string(r[1]);
     s.map = sql::to_string(r[2]);
-    s.state = sql::to_string(r[3]);
+    s.state = robot_state_from_string(sql::to_string(r[3]));
     s.x = sql::opt_double(r[4]);
     s.y = sql::opt_double(r[5]);
     s.theta = sql::opt_double(r[6]);
     s.v = sql::opt_double(r[7]);
     s.last_seen = sql::to_string(r[8]);
-    if (!r[9].is_null()) s.task_id = sql::to_uint(r[9]);
-    s.task_state = sql::to_string(r[10]);
+    if (!r[9].is_null()) {
+      s.task_id = sql::to_uint(r[9]);
+      s.task_state = task_state_from_string(sql::to_string(r[10]));
+    }
     s.goal_x = sql::opt_double(r[11]);
     s.goal_y = sql::opt_double(r[12]);
     out.push_back(std::move(s));
@@ -140,9 +143,16 @@ unsigned long long FleetStore::assign_goal(const std::string& robot, double x, d
   // The previous open task ends now: the new SetPosEnd replaces its goal on the robot (an
   // Abort pushed after it would stop the robot on its way to the new goal).
   q.reset();
-  q << "UPDATE tasks SET state = 'aborted', reason = 'replaced by task " << task << "' WHERE robot_id = " << id
-    << " AND id <> " << task << " AND state IN ('assigned', 'acknowledged', 'active')";
-  q.execute();
+  q << "SELECT id, state FROM tasks WHERE robot_id = " << id << " AND id <> " << task << " AND state IN "
+    << sql::open_task_states() << " FOR UPDATE";
+  for (const mysqlpp::Row& r : q.store()) {
+    const TaskTransition t = task_transition(task_state_from_string(sql::to_string(r[1])), TaskEvent::Replaced);
+    if (!t) continue;
+    mysqlpp::Query u = c_.query();
+    u << "UPDATE tasks SET state = " << sql::quoted(t.next())
+      << ", reason = 'replaced by task " << task << "' WHERE id = " << sql::to_uint(r[0]);
+    u.execute();
+  }
   tx.commit();
   return task;
 }
@@ -151,8 +161,7 @@ bool FleetStore::request_abort(const std::string& robot, const std::string& reas
   const unsigned id = robot_id(robot);
   mysqlpp::Query q = c_.query();
   q << "UPDATE tasks SET abort_requested_at = SYSDATE(6), reason = " << mysqlpp::quote << reason.substr(0, 255)
-    << " WHERE robot_id = " << id << " AND state IN ('assigned', 'acknowledged', 'active')"
-    << " AND abort_requested_at IS NULL";
+    << " WHERE robot_id = " << id << " AND state IN " << sql::open_task_states() << " AND abort_requested_at IS NULL";
   return q.execute().rows() > 0;
 }
 
@@ -171,8 +180,9 @@ std::vector<TaskInfo> FleetStore::tasks(const std::optional<std::string>& robot,
   q << " ORDER BY id DESC LIMIT " << limit;
   std::vector<TaskInfo> out;
   for (const mysqlpp::Row& r : q.store())
-    out.push_back({sql::to_uint(r[0]), sql::to_string(r[1]), sql::to_string(r[4]), sql::to_string(r[5]),
-                   sql::to_string(r[6]), sql::to_string(r[7]), sql::to_double(r[2]), sql::to_double(r[3])});
+    out.push_back({sql::to_uint(r[0]), sql::to_string(r[1]), task_state_from_string(sql::to_string(r[4])),
+                   sql::to_string(r[5]), sql::to_string(r[6]), sql::to_string(r[7]), sql::to_double(r[2]),
+                   sql::to_double(r[3])});
   return out;
 }
 

@@ -10,6 +10,8 @@
 
 #include <mysql++/mysql++.h>
 
+#include "protocol/fleet_states.h"
+
 namespace fleetmap {
 
 class RobotNotFound : public std::runtime_error {
@@ -19,13 +21,15 @@ class RobotNotFound : public std::runtime_error {
 
 struct RobotStatus {
   unsigned id = 0;
-  std::string name, map, state, last_seen, task_state;
+  std::string name, map, last_seen;
+  RobotState state = RobotState::Offline;
   std::optional<double> x, y, theta, v;
   std::optional<unsigned long long> task_id;
+  std::optional<TaskState> task_state;  // with task_id
   std::optional<double> goal_x, goal_y;
 };
 
-// A robot's profile (issue 8, seed 004; columns of robots): what its maps and plans
+// A robot's profile (seed 004 section III.A; columns of robots): what its maps and plans
 // depend on. nullopt: the server's default (robot_radius_m, body_height_m in
 // [server]); without a laser height the server sends the stored map unsliced
 // (server/daemon/robot_map_source.h).
@@ -51,7 +55,9 @@ void check_profile(const RobotProfileChange& change);
 
 struct TaskInfo {
   unsigned long long id = 0;
-  std::string robot, state, reason, created_at, updated_at;
+  std::string robot;
+  TaskState state = TaskState::Assigned;
+  std::string reason, created_at, updated_at;
   double goal_x = 0, goal_y = 0;
 };
 
@@ -75,8 +81,8 @@ class FleetStore {
   std::vector<RobotStatus> status();
   unsigned robot_id(const std::string& name);  // throws RobotNotFound
 
-  // A new goal replaces the robot's open task, which becomes aborted ("replaced by task N")
-  // without an Abort push: the new SetPosEnd is what the robot acts on.
+  // A new goal replaces the robot's open task, which becomes aborted ("replaced by task N",
+  // TaskEvent::Replaced) without an Abort push: the new SetPosEnd is what the robot acts on.
   unsigned long long assign_goal(const std::string& robot, double x, double y);
   // Asks the server to push Abort for the robot's open task; false when it has none.
   bool request_abort(const std::string& robot, const std::string& reason);

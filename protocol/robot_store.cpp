@@ -2,6 +2,7 @@
 
 #include "common/geometry/number_format.h"
 #include "protocol/sql_util.h"
+#include "protocol/task_lifecycle.h"
 
 namespace fleetmap {
 namespace {
@@ -11,7 +12,6 @@ constexpr const char* kRobotColumns =
     "body_height, can_stairs, can_ramps";
 constexpr const char* kTaskColumns =
     "id, robot_id, goal_x, goal_y, state, answer_id, abort_answer_id, abort_requested_at IS NOT NULL, reason";
-constexpr const char* kOpenStates = "('assigned', 'acknowledged', 'active')";
 
 std::string n(double v) { return format_number(v); }
 std::string n(const std::optional<double>& v) { return v ? format_number(*v) : "NULL"; }
@@ -22,7 +22,7 @@ TaskRow read_task(const mysqlpp::Row& r) {
   t.robot_id = static_cast<unsigned>(sql::to_uint(r[1]));
   t.goal_x = sql::to_double(r[2]);
   t.goal_y = sql::to_double(r[3]);
-  t.state = sql::to_string(r[4]);
+  t.state = task_state_from_string(sql::to_string(r[4]));
   if (!r[5].is_null()) t.answer_id = sql::to_uint(r[5]);
   if (!r[6].is_null()) t.abort_answer_id = sql::to_uint(r[6]);
   t.abort_requested = sql::to_int(r[7]) != 0;
@@ -37,7 +37,7 @@ RobotRow RobotStore::read_robot(const mysqlpp::Row& r) {
   b.id = static_cast<unsigned>(sql::to_uint(r[0]));
   b.db_user = sql::to_string(r[1]);
   if (!r[2].is_null()) b.map_id = static_cast<unsigned>(sql::to_uint(r[2]));
-  b.state = sql::to_string(r[3]);
+  b.state = robot_state_from_string(sql::to_string(r[3]));
   b.magic = sql::opt_int(r[4]);
   b.x = sql::opt_double(r[5]);
   b.y = sql::opt_double(r[6]);
@@ -82,13 +82,14 @@ std::optional<RobotRow> RobotStore::claim(unsigned robot_id) {
 
 void RobotStore::start_session(unsigned id, long long magic) {
   mysqlpp::Query q = c_.query();
-  q << "UPDATE robots SET magic = " << magic << ", session_at = SYSDATE(6), state = 'ready' WHERE id = " << id;
+  q << "UPDATE robots SET magic = " << magic
+    << ", session_at = SYSDATE(6), state = " << sql::quoted(RobotState::Ready) << " WHERE id = " << id;
   q.execute();
 }
 
-void RobotStore::set_state(unsigned id, const std::string& state) {
+void RobotStore::set_state(unsigned id, RobotState state) {
   mysqlpp::Query q = c_.query();
-  q << "UPDATE robots SET state = " << mysqlpp::quote << state << " WHERE id = " << id;
+  q << "UPDATE robots SET state = " << sql::quoted(state) << " WHERE id = " << id;
   q.execute();
 }
 
@@ -111,7 +112,8 @@ void RobotStore::record_object(unsigned id, std::optional<unsigned> map_id, cons
 
 std::optional<TaskRow> RobotStore::open_task(unsigned robot_id) {
   mysqlpp::Query q = c_.query();
-  q << "SELECT " << kTaskColumns << " FROM tasks WHERE robot_id = " << robot_id << " AND state IN " << kOpenStates
+  q << "SELECT " << kTaskColumns << " FROM tasks WHERE robot_id = " << robot_id << " AND state IN "
+    << sql::open_task_states()
     << " ORDER BY id DESC LIMIT 1";
   mysqlpp::StoreQueryResult res = q.store();
   if (res.empty()) return std::nullopt;
@@ -121,7 +123,7 @@ std::optional<TaskRow> RobotStore::open_task(unsigned robot_id) {
 std::vector<TaskRow> RobotStore::open_tasks(const std::vector<unsigned>& robot_ids) {
   if (robot_ids.empty()) return {};
   mysqlpp::Query q = c_.query();
-  q << "SELECT " << kTaskColumns << " FROM tasks WHERE state IN " << kOpenStates << " AND robot_id IN (";
+  q << "SELECT " << kTaskColumns << " FROM tasks WHERE state IN " << sql::open_task_states() << " AND robot_id IN (";
   for (size_t i = 0; i < robot_ids.size(); ++i) q << (i ? "," : "") << robot_ids[i];
   q << ") ORDER BY id DESC";
   std::vector<TaskRow> out;
@@ -143,9 +145,9 @@ std::optional<TaskRow> RobotStore::task_pushed_as(unsigned robot_id, unsigned lo
   return read_task(res[0]);
 }
 
-void RobotStore::set_task_state(unsigned long long task_id, const std::string& state, const std::string& reason) {
+void RobotStore::set_task_state(unsigned long long task_id, TaskState state, const std::string& reason) {
   mysqlpp::Query q = c_.query();
-  q << "UPDATE tasks SET state = " << mysqlpp::quote << state;
+  q << "UPDATE tasks SET state = " << sql::quoted(state);
   if (!reason.empty()) q << ", reason = " << mysqlpp::quote << reason.substr(0, 255);
   q << " WHERE id = " << task_id;
   q.execute();
@@ -166,8 +168,9 @@ void RobotStore::set_task_abort_answer(unsigned long long task_id, unsigned long
 std::vector<unsigned> RobotStore::robots_with_pushes(size_t limit) {
   mysqlpp::Query q = c_.query();
   q << "SELECT DISTINCT t.robot_id FROM tasks t JOIN robots r ON r.id = t.robot_id"
-       " WHERE r.magic IS NOT NULL AND r.removed_at IS NULL AND r.state <> 'lost' AND t.state IN "
-    << kOpenStates << " AND ((t.answer_id IS NULL) OR (t.abort_requested_at IS NOT NULL AND t.abort_answer_id IS NULL))"
+       " WHERE r.magic IS NOT NULL AND r.removed_at IS NULL AND r.state <> "
+    << sql::quoted(RobotState::Lost) << " AND t.state IN " << sql::open_task_states()
+    << " AND ((t.answer_id IS NULL) OR (t.abort_requested_at IS NOT NULL AND t.abort_answer_id IS NULL))"
     << " LIMIT " << limit;
   std::vector<unsigned> out;
   for (const mysqlpp::Row& r : q.store()) out.push_back(static_cast<unsigned>(sql::to_uint(r[0])));
@@ -176,8 +179,8 @@ std::vector<unsigned> RobotStore::robots_with_pushes(size_t limit) {
 
 std::vector<unsigned> RobotStore::silent_robots(double seconds, size_t limit) {
   mysqlpp::Query q = c_.query();
-  q << "SELECT r.id FROM robots r WHERE r.magic IS NOT NULL AND r.removed_at IS NULL AND r.state <> 'lost'"
-       " AND r.last_seen < SYSDATE(6) - INTERVAL "
+  q << "SELECT r.id FROM robots r WHERE r.magic IS NOT NULL AND r.removed_at IS NULL AND r.state <> "
+    << sql::quoted(RobotState::Lost) << " AND r.last_seen < SYSDATE(6) - INTERVAL "
     << static_cast<long long>(seconds * 1e6) << " MICROSECOND"
     << " AND NOT EXISTS (SELECT 1 FROM rr WHERE rr.db_user = r.db_user) LIMIT " << limit;
   std::vector<unsigned> out;

@@ -8,6 +8,7 @@
 
 #include <mysql++/mysql++.h>
 
+#include "protocol/fleet_states.h"
 #include "protocol/params.h"
 
 namespace fleetmap {
@@ -16,12 +17,13 @@ struct RobotRow {
   unsigned id = 0;
   std::string db_user;
   std::optional<unsigned> map_id;
-  std::string state;  // offline, ready, moving, stopped, lost
+  RobotState state = RobotState::Offline;
   std::optional<long long> magic;  // of the session; nullopt: no Ready yet
   std::optional<double> x, y, theta, v;
   std::optional<double> ini_x, ini_y, ini_theta;
   bool removed = false;
-  // Profile (issue 8); nullopt: the server's default.
+  // Profile (seed 004: what the robot's laser sees and its plans avoid); nullopt: the
+  // server's default.
   std::optional<double> laser_height, radius, body_height;
   bool can_stairs = false, can_ramps = true;
   bool registered() const { return magic.has_value() && !removed; }
@@ -31,7 +33,7 @@ struct TaskRow {
   unsigned long long id = 0;
   unsigned robot_id = 0;
   double goal_x = 0, goal_y = 0;
-  std::string state;  // assigned, acknowledged, active, done, aborted, failed
+  TaskState state = TaskState::Assigned;
   std::optional<unsigned long long> answer_id, abort_answer_id;
   bool abort_requested = false;
   std::string reason;
@@ -49,15 +51,16 @@ class RobotStore {
   std::optional<RobotRow> claim(unsigned robot_id);
 
   void start_session(unsigned id, long long magic);
-  void set_state(unsigned id, const std::string& state);
+  void set_state(unsigned id, RobotState state);
   void record_image(unsigned id, const SendImageParams& p, const std::string& data, const std::string& at);
   void record_object(unsigned id, std::optional<unsigned> map_id, const SetObjectParams& p, const std::string& at);
 
-  std::optional<TaskRow> open_task(unsigned robot_id);  // newest task not done/aborted/failed
+  std::optional<TaskRow> open_task(unsigned robot_id);  // the newest task in an open state (is_open)
   // The open task of each of these robots that has one, in one query.
   std::vector<TaskRow> open_tasks(const std::vector<unsigned>& robot_ids);
   std::optional<TaskRow> task_pushed_as(unsigned robot_id, unsigned long long answer_id);
-  void set_task_state(unsigned long long task_id, const std::string& state, const std::string& reason = "");
+  // Writes the state as given: the caller asked task_transition (protocol/task_lifecycle.h).
+  void set_task_state(unsigned long long task_id, TaskState state, const std::string& reason = "");
   void set_task_answer(unsigned long long task_id, unsigned long long answer_id);
   void set_task_abort_answer(unsigned long long task_id, unsigned long long answer_id);
 

@@ -7,6 +7,8 @@
 #include <mysql++/mysql++.h>
 
 #include "protocol/connection.h"
+#include "protocol/fleet_states.h"
+#include "protocol/task_lifecycle.h"
 
 namespace fleetmap::sql {
 
@@ -41,6 +43,21 @@ inline std::optional<double> opt_double(const mysqlpp::String& s) {
 inline std::optional<long long> opt_int(const mysqlpp::String& s) {
   if (s.is_null()) return std::nullopt;
   return to_int(s);
+}
+
+// A state as an SQL literal: 'lost'.
+inline std::string quoted(RobotState s) { return "'" + std::string(fleetmap::to_string(s)) + "'"; }
+inline std::string quoted(TaskState s) { return "'" + std::string(fleetmap::to_string(s)) + "'"; }
+
+// The open task states as an SQL list, for tasks.state IN ...: ('assigned', 'acknowledged', 'active').
+inline const std::string& open_task_states() {
+  static const std::string list = [] {
+    std::string s;
+    for (TaskState t : kTaskStates)
+      if (is_open(t)) s += (s.empty() ? "(" : ", ") + quoted(t);
+    return s + ")";
+  }();
+  return list;
 }
 
 }  // namespace fleetmap::sql

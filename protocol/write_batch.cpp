@@ -21,7 +21,7 @@ void WriteBatch::add(RequestWrites&& w) {
 void WriteBatch::robot(const RobotRow& r, const std::string& last_seen) {
   mysqlpp::Query q = c_.query();
   q << "UPDATE robots SET last_seen = GREATEST(COALESCE(last_seen, 0), " << mysqlpp::quote << last_seen
-    << "), state = " << mysqlpp::quote << r.state;
+    << "), state = " << mysqlpp::quote << std::string(to_string(r.state));
   if (r.x && r.y) q << ", x = " << n(r.x) << ", y = " << n(r.y);
   if (r.theta) q << ", theta = " << n(r.theta);
   if (r.v) q << ", v = " << n(r.v);

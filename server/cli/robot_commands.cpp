@@ -153,7 +153,7 @@ void add_robot_commands(CLI::App& app, CliContext& ctx, int* exit_code) {
         auto it = profiles.find(s.name);
         const RobotProfile p = it == profiles.end() ? RobotProfile{} : it->second;
         std::printf("%-6u %-20s %-20s %-9s %-8s %-8s %-8s %-6s %-5s\n", s.id, s.name.c_str(), s.map.c_str(),
-                    s.state.c_str(), metres(p.laser_height).c_str(), metres(p.radius).c_str(),
+                    std::string(to_string(s.state)).c_str(), metres(p.laser_height).c_str(), metres(p.radius).c_str(),
                     metres(p.body_height).c_str(), p.can_stairs ? "yes" : "no", p.can_ramps ? "yes" : "no");
       }
       *exit_code = exit_code::kOk;
@@ -197,10 +197,11 @@ void add_robot_commands(CLI::App& app, CliContext& ctx, int* exit_code) {
                   "LAST SEEN", "TASK", "TASK STATE", "GOAL");
       for (const RobotStatus& s : fleet.status()) {
         const std::string goal = s.goal_x ? "(" + opt(s.goal_x) + ", " + opt(s.goal_y) + ")" : "-";
-        std::printf("%-16s %-8s %9s %9s %7s %6s  %-26s %-6s %-12s %s\n", s.name.c_str(), s.state.c_str(),
+        std::printf("%-16s %-8s %9s %9s %7s %6s  %-26s %-6s %-12s %s\n", s.name.c_str(),
+                    std::string(to_string(s.state)).c_str(),
                     opt(s.x).c_str(), opt(s.y).c_str(), opt(s.theta).c_str(), opt(s.v).c_str(),
                     s.last_seen.empty() ? "-" : s.last_seen.c_str(),
-                    s.task_id ? std::to_string(*s.task_id).c_str() : "-", s.task_state.empty() ? "-" : s.task_state.c_str(),
+                    s.task_id ? std::to_string(*s.task_id).c_str() : "-", s.task_state ? std::string(to_string(*s.task_state)).c_str() : "-",
                     goal.c_str());
       }
       *exit_code = exit_code::kOk;
@@ -274,7 +275,7 @@ void add_robot_commands(CLI::App& app, CliContext& ctx, int* exit_code) {
       std::printf("%-6s %-16s %-13s %10s %10s  %-26s %s\n", "TASK", "ROBOT", "STATE", "GOAL X", "GOAL Y", "UPDATED",
                   "REASON");
       for (const TaskInfo& t : FleetStore(ctx.connection()).tasks(r, *limit))
-        std::printf("%-6llu %-16s %-13s %10.2f %10.2f  %-26s %s\n", t.id, t.robot.c_str(), t.state.c_str(), t.goal_x,
+        std::printf("%-6llu %-16s %-13s %10.2f %10.2f  %-26s %s\n", t.id, t.robot.c_str(), std::string(to_string(t.state)).c_str(), t.goal_x,
                     t.goal_y, t.updated_at.c_str(), t.reason.c_str());
       *exit_code = exit_code::kOk;
     });

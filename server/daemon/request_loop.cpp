@@ -2,17 +2,15 @@
 
 #include <algorithm>
 #include <map>
-#include <set>
 #include <stdexcept>
 #include <thread>
 
 #include <spdlog/spdlog.h>
 
 #include "protocol/connection.h"
-#include "protocol/map_store.h"
 #include "protocol/ops.h"
-#include "protocol/scene_store.h"
-#include "server/daemon/handlers/handler.h"
+#include "server/daemon/db_handler_stores.h"
+#include "server/daemon/dispatch.h"
 
 namespace fleetmap {
 namespace {
@@ -29,6 +27,23 @@ bool retryable(const mysqlpp::BadQuery& e) { return e.errnum() == kLockWaitTimeo
 
 // Client-side errors: the connection is gone (server restart, KILL, network).
 bool connection_lost(unsigned errnum) { return errnum >= 2000 && errnum < 3000; }
+
+// A batch's results into its WriteBatch; careful: each request's writes sent at once,
+// inside its savepoint.
+class WriteBatchSink : public BatchSink {
+ public:
+  WriteBatchSink(WriteBatch& batch, bool careful) : batch_(batch), careful_(careful) {}
+  void served(const Request& request, RequestWrites&& writes) override {
+    batch_.add(std::move(writes));
+    batch_.remove_request(request.id);
+    if (careful_) batch_.flush(/*commit=*/false);
+  }
+  void robot_seen(const RobotRow& robot, const std::string& last_seen) override { batch_.robot(robot, last_seen); }
+
+ private:
+  WriteBatch& batch_;
+  bool careful_;
+};
 
 }  // namespace
 
@@ -64,22 +79,15 @@ void RequestLoop::run() {
   // Idle back-off: poll again at once after work, then wait longer and longer, up to
   // poll_max_ms, while rr stays empty (SPEC 9: a tight loop burns a core).
   double idle_ms = 0;
-  unsigned housekeeping_passes = 0;
   while (!stop_) {
     size_t done = 0;
     try {
       if (!conn_) connect_with_retry();
       if (!conn_) break;
       done = serve_batch();
-      if (housekeeping_ && std::chrono::steady_clock::now() >= next_housekeeping_) {
-        done += push_operations();
-        mark_lost_robots();
-        drop_orphan_requests();
-        // Every 2 s: delete observations past their time (SetObject, issue 8); the maps
-        // and views skip them from expires_at on already.
-        if (housekeeping_passes++ % 20 == 0) SceneStore(*conn_).expire_observations();
-        next_housekeeping_ = std::chrono::steady_clock::now() + std::chrono::milliseconds(100);
-      }
+      if (housekeeping_)
+        if (const auto pass = schedule_.due(std::chrono::steady_clock::now()))
+          done += Housekeeping(*conn_, config_).run(*pass);
     } catch (const mysqlpp::BadQuery& e) {
       if (connection_lost(e.errnum())) {
         spdlog::warn("worker {}: connection lost ({}); reconnecting", worker_, e.what());
@@ -153,34 +161,25 @@ size_t RequestLoop::serve(bool careful) {
 
   std::vector<std::string> accounts;
   std::vector<unsigned> ids;
-  std::map<std::string, RobotSession> sessions;
+  std::map<std::string, ServedRobot> served;
   for (RobotRow& r : claimed) {
     accounts.push_back(r.db_user);
     ids.push_back(r.id);
     std::string key = r.db_user;
-    sessions.emplace(std::move(key), RobotSession{std::move(r), std::nullopt});
+    served.emplace(std::move(key), ServedRobot{std::move(r), std::nullopt});
   }
   for (TaskRow& t : robots.open_tasks(ids))
-    for (auto& [user, s] : sessions)
+    for (auto& [user, s] : served)
       if (s.robot.id == t.robot_id) s.open_task = t;
   const std::vector<Request> reqs =
       queue.requests_of(accounts, config_.batch_requests, config_.batch_requests * accounts.size());
 
   WriteBatch batch(*conn_, multi_statements_);
-  MapStore maps(*conn_);
-  MapInfoCache infos;
-  std::map<std::string, std::string> last_seen;
-  for (const Request& req : reqs) {
-    RobotSession& s = sessions.at(req.db_user);
-    if (!s.robot.removed) handle(s, req, robots, maps, infos, batch, careful);
-    batch.remove_request(req.id);
-    last_seen[req.db_user] = req.created_at;  // requests come in id order
-  }
-  for (auto& [user, s] : sessions) {
-    if (s.robot.removed || !last_seen.count(user)) continue;  // another server took its requests
-    if (s.robot.state == "lost") s.robot.state = "ready";   // anything it sends brings it back
-    batch.robot(s.robot, last_seen[user]);
-  }
+  WriteBatchSink sink(batch, careful);
+  DbRobotRecords records(*conn_);
+  DbRobotMaps maps(*conn_, cache_, planners_);
+  serve_requests(
+      served, reqs, [&](ServedRobot& s, const Request& req) { return handle(s, req, records, maps, careful); }, sink);
   if (config_.commit_delay_ms > 0)
     std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(config_.commit_delay_ms));
   batch.flush(/*commit=*/true);
@@ -188,115 +187,39 @@ size_t RequestLoop::serve(bool careful) {
   return reqs.size();
 }
 
-void RequestLoop::handle(RobotSession& session, const Request& req, RobotStore& robots, MapStore& maps,
-                         MapInfoCache& infos, WriteBatch& batch, bool careful) {
-  RobotRow& robot = session.robot;
-  HandlerContext ctx{config_, robots, maps, cache_, planners_, infos, session, robot, req, {}, {}};
-  const RobotSession before = session;  // an Error leaves the robot as it was
-  // Careful: each request in a savepoint with its writes sent at once, so that a
-  // database error in one handler undoes that request's work only.
+RequestWrites RequestLoop::handle(ServedRobot& served, const Request& req, RobotRecords& records, RobotMaps& maps,
+                                  bool careful) {
+  const ServedRobot before = served;
+  // Careful: each request in a savepoint with its writes sent at once (WriteBatchSink),
+  // so that a database error in one handler undoes that request's work only.
   if (careful) execute(*conn_, "SAVEPOINT request");
   auto refuse = [&](ErrorCode code, const std::string& message) {
     if (careful) execute(*conn_, "ROLLBACK TO SAVEPOINT request");
-    session = before;
-    ctx.writes.clear();
-    ctx.writes.answers.push_back(
-        {robot.id, robot.db_user, req.id, AnswerOp::Error, encode(ErrorParams{req.id, code, message}), std::nullopt});
+    served = before;
+    return error_answer(served.robot, req, code, message);
   };
+  const RobotRow& robot = before.robot;
   try {
-    const std::optional<RequestOp> op = parse_request_op(req.op);
-    if (!op) throw ProtocolError(ErrorCode::UnknownOp, "unknown op '" + req.op.substr(0, 16) + "'");
-    if (req.robot_id && *req.robot_id != robot.id)
-      throw ProtocolError(ErrorCode::NotYourRobot, "robot_id " + std::to_string(*req.robot_id) +
-                                                       " is not this account's robot (" + std::to_string(robot.id) + ")");
-    if (*op != RequestOp::Ready && !robot.registered())
-      throw ProtocolError(ErrorCode::NotRegistered, "send Ready first");
-    ctx.params = parse_params(req.params);
-    handler_for(*op)(ctx);
-    batch.add(std::move(ctx.writes));
-    if (careful) batch.flush(/*commit=*/false);
-    return;
-  } catch (const ProtocolError& e) {
-    refuse(e.code(), e.what());
-    spdlog::debug("worker {}: {} request {} ({}): {} {}", worker_, robot.db_user, req.id, req.op.substr(0, 16),
-                  name(e.code()), e.what());
+    RequestWrites w = dispatch(config_, records, maps, served, req);
+    // An Error answer: the handler wrote nothing directly (handler.h); in a savepoint,
+    // make sure of it.
+    if (careful && !w.answers.empty() && w.answers.back().op == AnswerOp::Error)
+      execute(*conn_, "ROLLBACK TO SAVEPOINT request");
+    return w;
   } catch (const mysqlpp::BadQuery& e) {
     // Fast mode: no savepoint to go back to; the batch goes again carefully (serve_batch).
     if (!careful || retryable(e) || connection_lost(e.errnum())) throw;
     spdlog::error("worker {}: {} request {} ({}): database error {}: {}", worker_, robot.db_user, req.id,
                   req.op.substr(0, 16), e.errnum(), e.what());
-    refuse(ErrorCode::Internal, "the server could not store this request");
+    return refuse(ErrorCode::Internal, "the server could not store this request");
   } catch (const mysqlpp::Exception&) {
     throw;  // the connection is in doubt: reconnect (run)
   } catch (const std::exception& e) {
     // Fast mode: its direct writes, if any, cannot be undone alone.
     if (!careful) throw RedoCarefully(e.what());
     spdlog::error("worker {}: {} request {} ({}): {}", worker_, robot.db_user, req.id, req.op.substr(0, 16), e.what());
-    refuse(ErrorCode::Internal, e.what());
+    return refuse(ErrorCode::Internal, e.what());
   }
-  batch.add(std::move(ctx.writes));
-  if (careful) batch.flush(/*commit=*/false);
-}
-
-size_t RequestLoop::drop_orphan_requests() {
-  // Requests from accounts that are no robot (inserted by hand by an administrator):
-  // nobody can read an answer; drop them so they do not sit at the head of the queue.
-  // Housekeeping, not every batch: the scan grows with the queue.
-  mysqlpp::Query q = conn_->query("SELECT id FROM rr WHERE db_user NOT IN (SELECT db_user FROM robots) LIMIT 100");
-  std::vector<unsigned long long> orphans;
-  for (const mysqlpp::Row& r : q.store()) orphans.push_back(std::stoull(std::string(r[0])));
-  if (orphans.empty()) return 0;
-  spdlog::warn("dropping {} request(s) from accounts that are no robot", orphans.size());
-  RequestQueue(*conn_).remove(orphans);
-  return orphans.size();
-}
-
-size_t RequestLoop::push_operations() {
-  RobotStore robots(*conn_);
-  RequestQueue queue(*conn_);
-  size_t pushed = 0;
-  for (unsigned id : robots.robots_with_pushes(config_.batch_robots)) {
-    Transaction tx(*conn_);
-    std::optional<RobotRow> robot = robots.claim(id);
-    if (!robot) continue;  // another worker or server holds it
-    std::optional<TaskRow> task = robots.open_task(id);
-    if (!task) continue;
-    if (task->abort_requested && !task->abort_answer_id) {
-      if (!task->answer_id) {
-        robots.set_task_state(task->id, "aborted");  // the robot never heard of it
-      } else {
-        const auto sa_id = queue.insert({id, robot->db_user, std::nullopt, AnswerOp::Abort, encode_abort(task->reason), std::nullopt});
-        robots.set_task_abort_answer(task->id, sa_id);
-        spdlog::info("pushed Abort of task {} to {}", task->id, robot->db_user);
-      }
-      ++pushed;
-    } else if (!task->answer_id) {
-      const auto sa_id = queue.insert({id, robot->db_user, std::nullopt, AnswerOp::SetPosEnd,
-                                       encode(SetPoseParams{task->goal_x, task->goal_y, std::nullopt}), std::nullopt});
-      robots.set_task_answer(task->id, sa_id);
-      spdlog::info("pushed SetPosEnd of task {} ({}, {}) to {}", task->id, task->goal_x, task->goal_y, robot->db_user);
-      ++pushed;
-    }
-    tx.commit();
-  }
-  return pushed;
-}
-
-size_t RequestLoop::mark_lost_robots() {
-  RobotStore robots(*conn_);
-  size_t lost = 0;
-  const double silent_s = config_.alive_period_s * config_.lost_after_periods;
-  for (unsigned id : robots.silent_robots(silent_s, config_.batch_robots)) {
-    Transaction tx(*conn_);
-    std::optional<RobotRow> robot = robots.claim(id);
-    if (!robot) continue;
-    robots.set_state(id, "lost");
-    while (auto task = robots.open_task(id)) robots.set_task_state(task->id, "failed", "robot lost");
-    tx.commit();
-    spdlog::warn("robot {} is lost (silent for more than {:.1f} s)", robot->db_user, silent_s);
-    ++lost;
-  }
-  return lost;
 }
 
 }  // namespace fleetmap

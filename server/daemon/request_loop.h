@@ -8,8 +8,8 @@
 // the queue head, the claim, the claimed robots' requests and open tasks, then every
 // write and the COMMIT together (protocol/write_batch.h). A failure that a whole batch
 // cannot contain sends it again request by request in savepoints ("careful" pass).
-// The housekeeping worker also pushes operators' goals and aborts, and marks silent
-// robots lost.
+// What each request does is server/daemon/dispatch.h; one worker also does the
+// periodic work of server/daemon/housekeeping.h between batches.
 #include <atomic>
 #include <chrono>
 #include <memory>
@@ -21,10 +21,11 @@
 #include "protocol/request_queue.h"
 #include "protocol/robot_store.h"
 #include "protocol/write_batch.h"
-#include "server/daemon/handlers/handler.h"
 #include "server/core/map_cache.h"
 #include "server/core/planner_cache.h"
 #include "server/core/server_config.h"
+#include "server/daemon/handlers/handler.h"
+#include "server/daemon/housekeeping.h"
 
 namespace fleetmap {
 
@@ -37,16 +38,13 @@ class RequestLoop {
   // One pass over waiting requests; returns how many requests it handled (for tests and
   // the benchmark driver).
   size_t serve_batch();
-  size_t push_operations();
-  size_t mark_lost_robots();
-  size_t drop_orphan_requests();
 
  private:
   void connect_with_retry();
   size_t serve(bool careful);
   std::vector<std::string> my_share(const std::vector<std::string>& waiting, bool mine) const;
-  void handle(RobotSession& session, const Request& req, RobotStore& robots, MapStore& maps, MapInfoCache& infos,
-              WriteBatch& batch, bool careful);
+  RequestWrites handle(ServedRobot& served, const Request& req, RobotRecords& records, RobotMaps& maps,
+                       bool careful);
 
   DbSettings db_;
   const ServerConfig& config_;
@@ -57,7 +55,7 @@ class RequestLoop {
   bool housekeeping_;
   bool multi_statements_ = true;  // a batch's writes and COMMIT in one round trip
   std::unique_ptr<mysqlpp::Connection> conn_;
-  std::chrono::steady_clock::time_point next_housekeeping_{};
+  HousekeepingSchedule schedule_;
 };
 
 }  // namespace fleetmap

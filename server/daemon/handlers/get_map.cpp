@@ -1,5 +1,5 @@
 // GetMap (SPEC 5.2, 5.4): the w x h window centred on (x, y), sides capped by
-// configuration, clipped to the map's border. "mode" (issue 8, docs/wire-format.md):
+// configuration, clipped to the map's border. "mode" (seed 002 section 3.4, docs/wire-format.md):
 // "2d" (the default) is the map the robot's laser sees (answer_map); "2.5d" is the
 // window of the stored segments, unsliced, with the scene's objects in params "scene".
 #include <algorithm>
@@ -7,21 +7,17 @@
 #include "common/io/scene_geojson.h"
 #include "protocol/map_codec.h"
 #include "server/daemon/handlers/handler.h"
-#include "server/daemon/robot_map_source.h"
+#include "server/daemon/robot_map_source.h"  // scene_in_window
 
 namespace fleetmap {
 namespace {
 
 void answer_map_with_scene(HandlerContext& ctx, const Rect& window, MapEncoding encoding) {
-  if (!ctx.robot.map_id)
-    throw ProtocolError(ErrorCode::Internal, "no map is assigned to this robot; ask an operator (fleetmap robot add --map)");
-  const std::optional<MapInfo> info = ctx.map_info();
-  if (!info) throw ProtocolError(ErrorCode::Internal, "the robot's map was deleted; ask an operator");
-  const Rect r = intersection(window, info->border.rect());
+  const MapInfo info = robot_map_info(ctx);
+  const Rect r = intersection(window, info.border.rect());
   if (r.empty()) throw ProtocolError(ErrorCode::BadParams, "params: expected a window that overlaps the map's border");
-  RobotMapSource& source = RobotMapSource::shared();
-  const Map m = source.map(ctx.maps, ctx.map_cache, *info, r, std::nullopt);
-  const auto scene = source.scene(ctx.maps.connection(), info->id);
+  const Map m = ctx.maps.robot_map(info, r, std::nullopt);
+  const auto scene = ctx.maps.scene(info.id);
   SetMapParams p = set_map_params(m, encoding);
   p.mode = MapMode::TwoAndHalfD;
   Json params = encode(p);

@@ -1,12 +1,11 @@
-// GetPath (SPEC 5.2, 7, issue 8): a path from the robot's last reported pose to the goal
+// GetPath (SPEC 5.2, 7; seed 004 for the profile): a path from the robot's last reported pose to the goal
 // of its open task, planned on the whole map for the robot's profile (radius, body
 // height, stairs; the server's defaults where the profile has none), keeping clear of
 // the objects its body cannot pass and of every avoided area (common/planning/planning_scene.h);
-// RRT-Connect + smoothing. The task becomes active.
+// RRT-Connect + smoothing. The task becomes active (TaskEvent::PathPlanned).
 #include <stdexcept>
 
 #include "server/daemon/handlers/handler.h"
-#include "server/daemon/robot_map_source.h"
 
 namespace fleetmap {
 
@@ -15,15 +14,12 @@ void handle_get_path(HandlerContext& ctx) {
   const std::optional<TaskRow> task = ctx.open_task();
   if (!task) throw ProtocolError(ErrorCode::NoGoal, "this robot has no open task");
   if (!ctx.robot.x || !ctx.robot.y) throw ProtocolError(ErrorCode::NoPose, "send SendPos first: no pose is known");
-  if (!ctx.robot.map_id) throw ProtocolError(ErrorCode::Internal, "no map is assigned to this robot");
-  const std::optional<MapInfo> info = ctx.map_info();
-  if (!info) throw ProtocolError(ErrorCode::Internal, "the robot's map was deleted; ask an operator");
+  const MapInfo info = robot_map_info(ctx);
   const PlannerProfile profile{ctx.robot.radius.value_or(ctx.config.robot_radius_m),
                                ctx.robot.body_height.value_or(ctx.config.body_height_m), ctx.robot.can_stairs};
   std::shared_ptr<const MapPlanner> planner;
   try {
-    const auto scene = RobotMapSource::shared().scene(ctx.maps.connection(), info->id);
-    planner = ctx.planners.get(ctx.map_cache, ctx.maps, info->id, info->name, profile, scene);
+    planner = ctx.maps.planner(info, profile);
   } catch (const std::invalid_argument& e) {  // a footprint the planner cannot take
     throw ProtocolError(ErrorCode::NoPlanner, std::string("cannot plan on this map: ") + e.what());
   }
@@ -45,7 +41,7 @@ void handle_get_path(HandlerContext& ctx) {
                                                std::to_string(task->goal_y) + "): " + why);
   }
   ctx.answer(AnswerOp::SetPath, encode(SetPathParams{*r.path, r.length}));
-  if (task->state == "acknowledged" || task->state == "assigned") ctx.set_task_state(task->id, "active");
+  ctx.task_event(*task, TaskEvent::PathPlanned);  // refused when already active
 }
 
 }  // namespace fleetmap

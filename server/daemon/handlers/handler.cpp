@@ -2,16 +2,18 @@
 
 #include "common/map/map_window.h"
 #include "protocol/map_codec.h"
-#include "server/daemon/robot_map_source.h"
 
 namespace fleetmap {
 
-void HandlerContext::set_task_state(unsigned long long task_id, const std::string& state) {
-  robots.set_task_state(task_id, state);
-  if (session.open_task && session.open_task->id == task_id) {
-    if (state == "assigned" || state == "acknowledged" || state == "active") session.open_task->state = state;
-    else session.open_task.reset();  // closed: a robot has one open task at most
+bool HandlerContext::task_event(const TaskRow& task, TaskEvent event) {
+  const TaskTransition t = task_transition(task.state, event);
+  if (!t) return false;
+  records.set_task_state(task.id, t.next());
+  if (served.open_task && served.open_task->id == task.id) {
+    if (is_open(t.next())) served.open_task->state = t.next();
+    else served.open_task.reset();  // closed: a robot has one open task at most
   }
+  return true;
 }
 
 Handler handler_for(RequestOp op) {
@@ -32,20 +34,25 @@ Handler handler_for(RequestOp op) {
   return nullptr;
 }
 
-void answer_map(HandlerContext& ctx, const Rect* window, MapEncoding encoding) {
+MapInfo robot_map_info(HandlerContext& ctx) {
   if (!ctx.robot.map_id)
     throw ProtocolError(ErrorCode::Internal, "no map is assigned to this robot; ask an operator (fleetmap robot add --map)");
-  const std::optional<MapInfo> info = ctx.map_info();
+  std::optional<MapInfo> info = ctx.map_info();
   if (!info) throw ProtocolError(ErrorCode::Internal, "the robot's map was deleted; ask an operator");
+  return std::move(*info);
+}
+
+void answer_map(HandlerContext& ctx, const Rect* window, MapEncoding encoding) {
+  const MapInfo info = robot_map_info(ctx);
   std::optional<Rect> r;
   if (window) {
-    r = intersection(*window, info->border.rect());
+    r = intersection(*window, info.border.rect());
     if (r->empty()) throw ProtocolError(ErrorCode::BadParams, "params: expected a window that overlaps the map's border");
   }
-  // The map the robot's laser sees (issue 8); without a laser height in its profile, the
-  // stored map as before (server/daemon/robot_map_source.h).
+  // The map the robot's laser sees (seed 004 section III.A); without a laser height in
+  // its profile, the stored map unsliced (server/daemon/robot_map_source.h).
   const std::optional<double> laser_height = ctx.robot.laser_height;
-  const Map m = RobotMapSource::shared().map(ctx.maps, ctx.map_cache, *info, r, laser_height);
+  const Map m = ctx.maps.robot_map(info, r, laser_height);
   SetMapParams p = set_map_params(m, encoding);
   p.laser_height = laser_height;
   ctx.answer(AnswerOp::SetMap, encode(p), encode_map(m, encoding));

@@ -21,9 +21,9 @@ void handle_ready(HandlerContext& ctx) {
     answer_map(ctx, nullptr, e);
   }
   // Last, after everything that may refuse the request: no direct write before an Error.
-  ctx.robots.start_session(ctx.robot.id, p.magic);
+  ctx.records.start_session(ctx.robot.id, p.magic);
   ctx.robot.magic = p.magic;
-  ctx.robot.state = "ready";
+  ctx.robot.state = RobotState::Ready;
 }
 
 }  // namespace fleetmap

@@ -11,7 +11,7 @@ void handle_send_image(HandlerContext& ctx) {
     throw ProtocolError(ErrorCode::PayloadTooLarge, "payload: expected at most " +
                                                         std::to_string(ctx.config.max_image_bytes) + " bytes, got " +
                                                         std::to_string(ctx.request.payload->size()));
-  ctx.robots.record_image(ctx.robot.id, p, *ctx.request.payload, ctx.request.created_at);
+  ctx.records.record_image(ctx.robot.id, p, *ctx.request.payload, ctx.request.created_at);
   ctx.op_ack();
 }
 

@@ -11,10 +11,10 @@ void handle_send_pos(HandlerContext& ctx) {
   ctx.robot.y = p.y;
   ctx.robot.theta = p.theta;
   ctx.robot.v = p.v;
-  if (p.v != 0) ctx.robot.state = "moving";
-  else if (ctx.robot.state == "moving") ctx.robot.state = "ready";
+  if (p.v != 0) ctx.robot.state = RobotState::Moving;
+  else if (ctx.robot.state == RobotState::Moving) ctx.robot.state = RobotState::Ready;
   if (p.v != 0)
-    if (const auto& task = ctx.open_task(); task && task->state == "acknowledged") ctx.set_task_state(task->id, "active");
+    if (const std::optional<TaskRow> task = ctx.open_task()) ctx.task_event(*task, TaskEvent::RobotMoving);
 }
 
 }  // namespace fleetmap

@@ -8,11 +8,11 @@ namespace fleetmap {
 
 void handle_stopped(HandlerContext& ctx) {
   decode_empty(ctx.params);
-  ctx.robot.state = "stopped";
+  ctx.robot.state = RobotState::Stopped;
   ctx.robot.v = 0;
-  if (const auto& task = ctx.open_task(); task && task->state == "active" && ctx.robot.x && ctx.robot.y) {
+  if (const std::optional<TaskRow> task = ctx.open_task(); task && ctx.robot.x && ctx.robot.y) {
     if (std::hypot(*ctx.robot.x - task->goal_x, *ctx.robot.y - task->goal_y) <= ctx.config.goal_tolerance_m)
-      ctx.set_task_state(task->id, "done");
+      ctx.task_event(*task, TaskEvent::GoalReached);  // refused unless active
   }
   ctx.op_ack();
 }

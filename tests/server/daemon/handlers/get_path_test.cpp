@@ -1,0 +1,99 @@
+// GetPath (SPEC 5.2, 7): a path from the last pose to the open task's goal around the
+// map's obstacles, for the robot's profile; the task becomes active.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "tests/server/daemon/fake_stores.h"
+
+namespace fleetmap::fakes {
+namespace {
+
+struct GetPathTest : ::testing::Test {
+  Bench b;
+  void SetUp() override {
+    b.robot().x = 5;
+    b.robot().y = 2;
+    b.served.open_task = task(3, 7, TaskState::Acknowledged, 15, 2);  // behind the wall
+  }
+};
+
+// The length of the polyline, and whether it passes the wall (x = 10, y < 6) only above it.
+double length(const Json& waypoints) {
+  double l = 0;
+  for (size_t i = 1; i < waypoints.size(); ++i)
+    l += std::hypot(waypoints[i][0].get<double>() - waypoints[i - 1][0].get<double>(),
+                    waypoints[i][1].get<double>() - waypoints[i - 1][1].get<double>());
+  return l;
+}
+
+TEST_F(GetPathTest, PlansAroundTheWallFromThePoseToTheGoalAndTheTaskIsActive) {
+  const RequestWrites w = b.send("GetPath", "{}");
+  ASSERT_EQ(w.answers.size(), 1u) << w.answers[0].params.dump();
+  ASSERT_EQ(w.answers[0].op, AnswerOp::SetPath) << w.answers[0].params.dump();
+  const Json& pts = w.answers[0].params["waypoints"];
+  ASSERT_GE(pts.size(), 3u);  // not the straight line through the wall
+  EXPECT_EQ(pts.front(), Json::parse("[5, 2]"));
+  EXPECT_EQ(pts.back(), Json::parse("[15, 2]"));
+  // Around the wall's end at y = 6, so at least twice the climb from y = 2 to 6.
+  EXPECT_GT(length(pts), 2 * std::hypot(5, 4) - 0.01);
+  EXPECT_NEAR(w.answers[0].params["length"].get<double>(), length(pts), 1e-6);
+  ASSERT_EQ(b.records.task_states.size(), 1u);
+  EXPECT_EQ(b.records.task_states[0], std::make_pair(3ull, TaskState::Active));
+}
+
+TEST_F(GetPathTest, PlansForTheRobotsProfileElseTheServersDefaults) {
+  b.send("GetPath", "{}");
+  b.robot().radius = 0.6;
+  b.robot().body_height = 0.5;
+  b.robot().can_stairs = true;
+  b.send("GetPath", "{}");
+  ASSERT_EQ(b.maps.profiles.size(), 2u);
+  EXPECT_EQ(b.maps.profiles[0].radius, b.config.robot_radius_m);
+  EXPECT_EQ(b.maps.profiles[0].body_height, b.config.body_height_m);
+  EXPECT_FALSE(b.maps.profiles[0].can_climb_stairs);
+  EXPECT_EQ(b.maps.profiles[1].radius, 0.6);
+  EXPECT_EQ(b.maps.profiles[1].body_height, 0.5);
+  EXPECT_TRUE(b.maps.profiles[1].can_climb_stairs);
+}
+
+TEST_F(GetPathTest, AnActiveTaskStaysActive) {
+  b.served.open_task->state = TaskState::Active;
+  EXPECT_EQ(b.send("GetPath", "{}").answers.at(0).op, AnswerOp::SetPath);
+  EXPECT_TRUE(b.records.task_states.empty());
+}
+
+TEST_F(GetPathTest, WithoutATaskNoGoalWithoutAPoseNoPose) {
+  b.served.open_task.reset();
+  EXPECT_EQ(error_code(b.send("GetPath", "{}")), "no_goal");
+  b.served.open_task = task(3, 7, TaskState::Assigned, 15, 2);
+  b.robot().x.reset();
+  EXPECT_EQ(error_code(b.send("GetPath", "{}")), "no_pose");
+  EXPECT_TRUE(b.records.task_states.empty());
+}
+
+TEST_F(GetPathTest, AGoalInsideTheWallIsNoPathNamingTheGoal) {
+  b.served.open_task->goal_x = 10;
+  b.served.open_task->goal_y = 3;
+  const RequestWrites w = b.send("GetPath", "{}");
+  ASSERT_EQ(error_code(w), "no_path");
+  EXPECT_NE(w.answers[0].params["message"].get<std::string>().find("the goal"), std::string::npos)
+      << w.answers[0].params["message"];
+  EXPECT_TRUE(b.records.task_states.empty());
+  EXPECT_EQ(b.served.open_task->state, TaskState::Acknowledged);
+}
+
+TEST_F(GetPathTest, AMapThePlannerCannotTakeIsNoPlanner) {
+  b.maps.planner_refuses = true;
+  const RequestWrites w = b.send("GetPath", "{}");
+  ASSERT_EQ(error_code(w), "no_planner");
+  EXPECT_NE(w.answers[0].params["message"].get<std::string>().find("obstacle 7"), std::string::npos);
+}
+
+TEST_F(GetPathTest, MalformedParamsGetBadJson) {
+  EXPECT_EQ(error_code(b.send("GetPath", "[]")), "bad_json");
+  EXPECT_TRUE(b.records.task_states.empty());
+}
+
+}  // namespace
+}  // namespace fleetmap::fakes
