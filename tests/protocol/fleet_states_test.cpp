@@ -2,7 +2,12 @@
 // its state and writes back as the same text; any other text is refused by name.
 #include "protocol/fleet_states.h"
 
+#include <fstream>
+#include <sstream>
+
 #include <gtest/gtest.h>
+
+#include "protocol/sql_util.h"
 
 namespace fleetmap {
 namespace {
@@ -55,6 +60,18 @@ TEST(FleetStates, UnknownTextIsRefusedNamingTheColumnAndTheStates) {
       EXPECT_NE(m.find("assigned, acknowledged, active, done, aborted, failed"), std::string::npos) << m;
     }
   }
+}
+
+TEST(FleetStates, TheOpenStatesInSqlAreTheOnesRobotRemoveFails) {
+  // robot_remove applies TaskEvent::RobotRemoved in SQL (sql/40_robot_accounts.sql): it
+  // must fail the same open tasks the server works on.
+  EXPECT_EQ(sql::open_task_states(), "('assigned', 'acknowledged', 'active')");
+  std::ifstream in(FLEETMAP_SOURCE_DIR "/sql/40_robot_accounts.sql");
+  ASSERT_TRUE(in) << "cannot read sql/40_robot_accounts.sql";
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_NE(text.str().find("t.state IN " + sql::open_task_states()), std::string::npos);
+  EXPECT_EQ(sql::quoted(RobotState::Lost), "'lost'");
 }
 
 }  // namespace
