@@ -15,11 +15,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "common/io/amrl_import.h"
+#include "common/io/read_map_file.h"
 #include "common/planning/grid_astar.h"
 #include "common/planning/map_planner.h"
 #include "common/io/map_svg.h"
-#include "common/io/seed_format.h"
 
 namespace {
 
@@ -66,8 +65,7 @@ int main(int argc, char** argv) {
   app.add_flag("--dump", dump, "print every pair");
   CLI11_PARSE(app, argc, argv);
 
-  const bool amrl = map_path.ends_with(".vectormap.txt");
-  const Map map = amrl ? read_amrl_file(map_path, AmrlOptions{}) : read_seed_file(map_path);
+  const Map map = read_map_file(map_path);
   const Rect b = map.border.rect();
   std::printf("map %s: %zu obstacles, %zu segments, %.0f x %.0f m; robot radius %.2f m\n", map_path.c_str(),
               map.obstacles.size(), map.segment_count(), b.xmax - b.xmin, b.ymax - b.ymin, po.radius);

@@ -19,9 +19,8 @@
 #include <thread>
 #include <vector>
 
-#include "common/io/amrl_import.h"
+#include "common/io/read_map_file.h"
 #include "common/raycast/grid_ray_caster.h"
-#include "common/io/seed_format.h"
 #include "common/raycast/seed_ray_caster.h"
 #include "common/raycast/sweep_ray_caster.h"
 
@@ -137,8 +136,7 @@ int main(int argc, char** argv) {
   app.add_flag("--alternatives", alternatives, "also time the other designs and cell sizes tried");
   CLI11_PARSE(app, argc, argv);
 
-  const bool amrl = map_path.ends_with(".vectormap.txt");
-  const Map map = amrl ? read_amrl_file(map_path, AmrlOptions{}) : read_seed_file(map_path);
+  const Map map = read_map_file(map_path);
   const std::vector<double> beams = evenly_spread_angles(beams_n, fov_deg * kPi / 180);
   std::printf(
       "map %s: %zu obstacles, %zu segments; rmax %.1f m, %d beams over %.0f deg, hL %.2f m; "

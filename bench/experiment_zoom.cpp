@@ -38,12 +38,11 @@
 #include "client/sim/laser_simulator.h"
 #include "client/localization/particle_filter.h"
 #include "client/zoom_map.h"
-#include "common/io/amrl_import.h"
+#include "common/io/read_map_file.h"
 #include "common/raycast/grid_ray_caster.h"
 #include "common/map/map_window.h"
 #include "common/raycast/ray_rules.h"
 #include "common/raycast/ray_segment.h"
-#include "common/io/seed_format.h"
 #include "common/raycast/seed_ray_caster.h"
 
 namespace {
@@ -51,11 +50,6 @@ namespace {
 using namespace fleetmap;
 using namespace fleetmap::localization;
 using Clock = std::chrono::steady_clock;
-
-bool is_amrl_path(const std::string& p) {
-  const std::string suffix = ".vectormap.txt";
-  return p.size() >= suffix.size() && p.compare(p.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
@@ -255,7 +249,7 @@ int main(int argc, char** argv) {
   app.add_flag("--skip-seed", s.skip_seed, "skip the seed's bounding-circle caster");
   CLI11_PARSE(app, argc, argv);
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // a table line as soon as it is known, also into a pipe
-  const Map map = is_amrl_path(s.map) ? read_amrl_file(s.map, AmrlOptions{}) : read_seed_file(s.map);
+  const Map map = read_map_file(s.map);
   const RayCasterOptions laser{0.3, 15.0};
   std::shared_ptr<const RayCaster> world = std::make_shared<GridRayCaster>(map, laser);
   const Rect b = map.border.rect();

@@ -1,7 +1,6 @@
 #include "protocol/scene_store.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -9,6 +8,7 @@
 #include <unordered_map>
 
 #include "common/map/map_validation.h"
+#include "common/scene/scene_validation.h"
 #include "common/geometry/number_format.h"
 #include "common/geometry/polygon.h"
 #include "protocol/connection.h"
@@ -40,41 +40,10 @@ std::string utf8_prefix(const std::string& s, size_t n) {
   return s.substr(0, n);
 }
 
-// The reader's rule for tags (common/io/scene_geojson.cpp), within the column's 64 bytes.
-void check_tag(const std::string& t) {
-  if (t.empty() || t.size() > 64) throw std::invalid_argument("expected a tag of 1-64 bytes, got '" + t + "'");
-  if (t.find(':') != std::string::npos) throw std::invalid_argument("expected a tag without ':', got '" + t + "'");
-  if (auto e = check_text(t, "a tag")) throw std::invalid_argument(*e);
+// The scene's rules (common/scene/scene_validation.h), thrown before any SQL runs.
+void require(const std::optional<std::string>& problem) {
+  if (problem) throw std::invalid_argument(*problem);
 }
-
-void check_polygon(const Polygon& ring, const std::string& what) {
-  if (auto p = polygon_problem(ring)) throw std::invalid_argument(what + ": " + *p);
-}
-
-// What import refuses before any SQL runs: the rules of common/scene/scene.h.
-void check_scene(const Scene& scene) {
-  std::set<std::string> keys;
-  for (const EnvObject& o : scene.objects) {
-    if (o.id.empty() || o.id.size() > 255) throw std::invalid_argument("expected object keys of 1-255 bytes, got '" + o.id + "'");
-    if (!keys.insert(o.id).second) throw std::invalid_argument("object key '" + o.id + "' appears twice");
-    check_tag(o.tag);
-    if (o.elements.empty()) throw std::invalid_argument("object '" + o.id + "' has no element");
-    for (size_t i = 0; i < o.elements.size(); ++i) {
-      const Element& e = o.elements[i];
-      check_polygon(e.footprint, "object '" + o.id + "' element " + std::to_string(i));
-      if (e.z && !(std::isfinite(e.z->zmin) && std::isfinite(e.z->zmax) && e.z->zmin < e.z->zmax))
-        throw std::invalid_argument("object '" + o.id + "' element " + std::to_string(i) + ": expected zmin < zmax");
-    }
-  }
-  keys.clear();
-  for (const AvoidedArea& a : scene.avoided) {
-    if (a.id.empty() || a.id.size() > 255) throw std::invalid_argument("expected avoided-area keys of 1-255 bytes, got '" + a.id + "'");
-    if (!keys.insert(a.id).second) throw std::invalid_argument("avoided area '" + a.id + "' appears twice");
-    check_polygon(a.area, "avoided area '" + a.id + "'");
-  }
-  if (scene.bounds) check_polygon(*scene.bounds, "bounds");
-}
-
 
 // The first stored key among `keys` in table/column of the map, if any.
 std::optional<std::string> first_existing(mysqlpp::Connection& c, const char* table, const char* column,
@@ -188,55 +157,6 @@ std::vector<ObjectRow> nearest(mysqlpp::Connection& c, const std::string& sql, P
 
 }  // namespace
 
-Polygon parse_polygon_wkt(const std::string& wkt) {
-  auto fail = [&](const std::string& what) -> Polygon {
-    throw std::invalid_argument("expected " + what + " in 'POLYGON((x y, x y, ...))', got '" + wkt + "'");
-  };
-  size_t at = 0;
-  auto skip = [&] {
-    while (at < wkt.size() && std::isspace(static_cast<unsigned char>(wkt[at]))) ++at;
-  };
-  auto eat = [&](char c) {
-    skip();
-    if (at < wkt.size() && wkt[at] == c) return ++at, true;
-    return false;
-  };
-  skip();
-  std::string word;
-  while (at < wkt.size() && std::isalpha(static_cast<unsigned char>(wkt[at]))) word += static_cast<char>(std::toupper(wkt[at++]));
-  if (word != "POLYGON") return fail("the word POLYGON");
-  if (!eat('(') || !eat('(')) return fail("'(('");
-  Polygon ring;
-  for (;;) {
-    double xy[2];
-    for (double& v : xy) {
-      skip();
-      auto [end, ec] = std::from_chars(wkt.data() + at, wkt.data() + wkt.size(), v);
-      if (ec != std::errc() || !std::isfinite(v)) return fail("a number");
-      at = static_cast<size_t>(end - wkt.data());
-    }
-    ring.push_back({xy[0], xy[1]});
-    if (eat(',')) continue;
-    if (!eat(')')) return fail("',' or ')'");
-    break;
-  }
-  if (eat(',')) throw std::invalid_argument("expected one ring (holes are not part of the model), got '" + wkt + "'");
-  if (!eat(')')) return fail("'))'");
-  skip();
-  if (at != wkt.size()) return fail("nothing after '))'");
-  if (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
-  return ring;
-}
-
-std::string polygon_to_wkt(const Polygon& ring) {
-  std::string s = "POLYGON((";
-  for (size_t i = 0; i <= ring.size(); ++i) {
-    const Point p = ring[i % ring.size()];
-    s += (i ? "," : "") + n(p.x) + " " + n(p.y);
-  }
-  return s + "))";
-}
-
 unsigned SceneStore::map_id(const std::string& map, const char* lock) {
   mysqlpp::Query q = c_.query();
   q << "SELECT id FROM maps WHERE name = " << mysqlpp::quote << map << lock;
@@ -247,7 +167,7 @@ unsigned SceneStore::map_id(const std::string& map, const char* lock) {
 
 SceneImportReport SceneStore::import(const std::string& map, const Scene& scene, const SceneImportOptions& options) {
   if (auto e = check_map_name(map)) throw std::invalid_argument(*e);
-  check_scene(scene);
+  validate_scene(scene);
   SceneImportReport report;
   Transaction tx(c_);
   // A shared lock on the map: it cannot be deleted or replaced under us.
@@ -340,7 +260,7 @@ Scene SceneStore::load(const std::string& map) {
 }
 
 std::vector<ObjectRow> SceneStore::list(const std::string& map, const ObjectFilter& filter) {
-  if (!filter.tag.empty()) check_tag(filter.tag);
+  if (!filter.tag.empty()) require(check_tag(filter.tag));
   const unsigned mid = map_id(map);
   if (filter.centre) {
     if (!(filter.radius >= 0 && std::isfinite(filter.radius)))
@@ -360,7 +280,7 @@ std::vector<ObjectRow> SceneStore::list(const std::string& map, const ObjectFilt
 
 std::vector<ObjectRow> SceneStore::near(const std::string& map, Point p, const std::string& tag, size_t k,
                                         NearAccess access, NearStats* stats) {
-  if (!tag.empty()) check_tag(tag);
+  if (!tag.empty()) require(check_tag(tag));
   return near(map_id(map), p, tag, k, access, stats);
 }
 
@@ -417,8 +337,8 @@ std::vector<std::string> SceneStore::avoided_areas_containing(const std::string&
 
 std::string SceneStore::add_avoided_area(const std::string& map, const std::string& wkt, const std::string& key) {
   const Polygon ring = parse_polygon_wkt(wkt);
-  check_polygon(ring, "avoided area");
-  if (key.size() > 255) throw std::invalid_argument("expected an avoided-area key of at most 255 bytes");
+  require(check_polygon(ring, "avoided area"));
+  if (!key.empty()) require(check_key(key, "avoided-area"));
   Transaction tx(c_);
   const std::string mid = std::to_string(map_id(map, " LOCK IN SHARE MODE"));
   auto exists = [&](const std::string& k) {
@@ -467,10 +387,9 @@ std::vector<TagInfo> SceneStore::tags() {
 
 bool SceneStore::set_tag(const std::string& tag, const std::string& tag_class,
                          const std::optional<std::string>& description) {
-  check_tag(tag);
-  if (!is_tag_class(tag_class))
-    throw std::invalid_argument("expected a tag class (obstacle, landmark, interactable or dynamic), got '" + tag_class + "'");
-  if (description && description->size() > 255) throw std::invalid_argument("expected a description of at most 255 bytes");
+  require(check_tag(tag));
+  require(check_tag_class(tag_class));
+  if (description) require(check_description(*description));
   mysqlpp::Query q = c_.query();
   q << "INSERT INTO tags (tag, class, description) VALUES (" << mysqlpp::quote << tag << "," << mysqlpp::quote
     << tag_class << "," << mysqlpp::quote << description.value_or("") << ") ON DUPLICATE KEY UPDATE class = VALUES(class)";

@@ -1,5 +1,5 @@
 #pragma once
-// The semantic layer in the database (seed 002): tables tags, env_objects,
+// The semantic layer in the database (seed 002 section 3, seed 004 section II): tables tags, env_objects,
 // object_elements (footprint POLYGON, spatial index), avoided_areas (POLYGON, spatial
 // index) and map_bounds, sql/60_semantic.sql. A map's Scene (common/scene/scene.h) is found by
 // the map's name; deleting or replacing the map deletes its scene (foreign-key cascade).
@@ -17,6 +17,7 @@
 
 #include <mysql++/mysql++.h>
 
+#include "common/io/wkt.h"  // parse_polygon_wkt, polygon_to_wkt: the store's polygon text
 #include "common/scene/scene.h"
 
 namespace fleetmap {
@@ -150,10 +151,5 @@ class SceneStore {
                                     std::optional<double> box_half);
   mysqlpp::Connection& c_;
 };
-
-// 'POLYGON((x y, x y, ...))' (case-insensitive; the closing vertex optional; one ring) to
-// a ring without the repeated vertex; an "expected ..., got ..." message otherwise.
-Polygon parse_polygon_wkt(const std::string& wkt);
-std::string polygon_to_wkt(const Polygon& ring);  // closed ring, shortest round-trip numbers
 
 }  // namespace fleetmap

@@ -1,10 +1,11 @@
 #include "client/localization/distance_field.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 
-#include "common/raycast/ray_rules.h"
+#include "common/map/laser_rules.h"
 
 namespace fleetmap::localization {
 
@@ -42,22 +43,23 @@ void transform_1d(const float* f, float* d, int n, std::vector<int>& v, std::vec
 
 }  // namespace
 
-DistanceField::DistanceField(const Map& map, DistanceFieldOptions o) : resolution_(o.resolution) {
+DistanceField::DistanceField(const Map& map, DistanceFieldOptions o) {
   const Rect r = map.border.rect();
   const double w = std::max(0.0, r.xmax - r.xmin) + 2 * o.margin, h = std::max(0.0, r.ymax - r.ymin) + 2 * o.margin;
-  while (w / resolution_ * (h / resolution_) > static_cast<double>(o.max_cells)) resolution_ *= 1.25;
-  origin_ = {r.xmin - o.margin, r.ymin - o.margin};
-  width_ = std::max(1, static_cast<int>(std::ceil(w / resolution_)));
-  height_ = std::max(1, static_cast<int>(std::ceil(h / resolution_)));
-  std::vector<float> f(static_cast<size_t>(width_) * height_, kFar);
+  double res = o.resolution;
+  while (w / res * (h / res) > static_cast<double>(o.max_cells)) res *= 1.25;
+  frame_ = {{r.xmin - o.margin, r.ymin - o.margin}, res, std::max(1, static_cast<int>(std::ceil(w / res))),
+            std::max(1, static_cast<int>(std::ceil(h / res)))};
+  const int width = frame_.width, height = frame_.height;
+  std::vector<float> f(frame_.cells(), kFar);
 
   // Rasterize: points every half cell along each wall.
   const auto mark = [&](Point a, Point b) {
-    const int steps = std::max(1, static_cast<int>(std::ceil(2 * fleetmap::distance(a, b) / resolution_)));
+    const int steps = std::max(1, static_cast<int>(std::ceil(2 * fleetmap::distance(a, b) / res)));
     for (int s = 0; s <= steps; ++s) {
       const double t = static_cast<double>(s) / steps;
-      const int ix = cell_x(a.x + t * (b.x - a.x)), iy = cell_y(a.y + t * (b.y - a.y));
-      if (ix >= 0 && ix < width_ && iy >= 0 && iy < height_) f[index(ix, iy)] = 0;
+      const int64_t ix = frame_.col(a.x + t * (b.x - a.x)), iy = frame_.row(a.y + t * (b.y - a.y));
+      if (frame_.inside(ix, iy)) f[frame_.index(ix, iy)] = 0;
     }
   };
   for (const Obstacle& ob : map.obstacles)
@@ -67,26 +69,22 @@ DistanceField::DistanceField(const Map& map, DistanceFieldOptions o) : resolutio
   // Columns, then rows.
   std::vector<int> v;
   std::vector<double> z;
-  std::vector<float> col_in(height_), col_out(height_), row_out(width_);
-  for (int ix = 0; ix < width_; ++ix) {
-    for (int iy = 0; iy < height_; ++iy) col_in[iy] = f[index(ix, iy)];
-    transform_1d(col_in.data(), col_out.data(), height_, v, z);
-    for (int iy = 0; iy < height_; ++iy) f[index(ix, iy)] = col_out[iy];
+  std::vector<float> col_in(height), col_out(height), row_out(width);
+  for (int ix = 0; ix < width; ++ix) {
+    for (int iy = 0; iy < height; ++iy) col_in[iy] = f[index(ix, iy)];
+    transform_1d(col_in.data(), col_out.data(), height, v, z);
+    for (int iy = 0; iy < height; ++iy) f[index(ix, iy)] = col_out[iy];
   }
   distances_.resize(f.size());
-  for (int iy = 0; iy < height_; ++iy) {
-    transform_1d(&f[index(0, iy)], row_out.data(), width_, v, z);
-    for (int ix = 0; ix < width_; ++ix)
-      distances_[index(ix, iy)] = static_cast<float>(std::sqrt(std::min(row_out[ix], kFar)) * resolution_);
+  for (int iy = 0; iy < height; ++iy) {
+    transform_1d(&f[index(0, iy)], row_out.data(), width, v, z);
+    for (int ix = 0; ix < width; ++ix)
+      distances_[index(ix, iy)] = static_cast<float>(std::sqrt(std::min(row_out[ix], kFar)) * res);
   }
 }
 
-int DistanceField::cell_x(double x) const { return static_cast<int>(std::floor((x - origin_.x) / resolution_)); }
-int DistanceField::cell_y(double y) const { return static_cast<int>(std::floor((y - origin_.y) / resolution_)); }
-
 double DistanceField::distance(Point p) const {
-  const int ix = std::clamp(cell_x(p.x), 0, width_ - 1), iy = std::clamp(cell_y(p.y), 0, height_ - 1);
-  return distances_[index(ix, iy)];
+  return distances_[frame_.index(frame_.clamp_col(p.x), frame_.clamp_row(p.y))];
 }
 
 }  // namespace fleetmap::localization

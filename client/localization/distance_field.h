@@ -6,7 +6,7 @@
 //
 // The grid covers the map's border plus `margin` metres on every side (RMAX, so that a
 // scan's end points from any pose in the border stay on the grid). Walls are the ST 1-4
-// segments at least as high as the laser (ray_rules.h's stops_laser); stairs and ramps
+// segments at least as high as the laser (common/map/laser_rules.h); stairs and ramps
 // count by their segments higher than the laser, an approximation (the filter's ray
 // casting, which follows ray_rules.h exactly, judges the candidates afterwards).
 // Exact transform by the lower envelope of parabolas (Felzenszwalb & Huttenlocher 2012),
@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "common/geometry/grid_frame.h"
 #include "common/map/map.h"
 
 namespace fleetmap::localization {
@@ -29,23 +30,22 @@ class DistanceField {
  public:
   explicit DistanceField(const Map& map, DistanceFieldOptions options = {});
 
-  int width() const { return width_; }
-  int height() const { return height_; }
-  double resolution() const { return resolution_; }
-  Point origin() const { return origin_; }  // the lower-left corner of cell (0, 0)
-  size_t index(int ix, int iy) const { return static_cast<size_t>(iy) * width_ + ix; }
-  Point centre(int ix, int iy) const { return {origin_.x + (ix + 0.5) * resolution_, origin_.y + (iy + 0.5) * resolution_}; }
-  int cell_x(double x) const;  // may be outside [0, width)
-  int cell_y(double y) const;
+  const GridFrame& frame() const { return frame_; }
+  int width() const { return frame_.width; }
+  int height() const { return frame_.height; }
+  double resolution() const { return frame_.cell; }
+  Point origin() const { return frame_.origin; }  // the lower-left corner of cell (0, 0)
+  size_t index(int ix, int iy) const { return frame_.index(ix, iy); }
+  Point centre(int ix, int iy) const { return frame_.centre(ix, iy); }
+  int cell_x(double x) const { return static_cast<int>(frame_.col(x)); }  // may be outside [0, width)
+  int cell_y(double y) const { return static_cast<int>(frame_.row(y)); }
   // Metres from the cell's centre to the nearest wall cell's centre; a large value when
   // the map has no wall. Outside the grid: the value of the nearest cell.
   double distance(Point p) const;
   const std::vector<float>& distances() const { return distances_; }  // by index()
 
  private:
-  double resolution_;
-  Point origin_;
-  int width_ = 0, height_ = 0;
+  GridFrame frame_;
   std::vector<float> distances_;
 };
 

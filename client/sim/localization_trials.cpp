@@ -9,8 +9,7 @@
 #include "client/sim/drive_simulator.h"
 #include "client/localization/free_space.h"
 #include "client/localization/global_search.h"
-#include "common/io/amrl_import.h"
-#include "common/io/seed_format.h"
+#include "common/io/read_map_file.h"
 
 namespace fleetmap::localization {
 
@@ -153,7 +152,7 @@ std::optional<ParticleFilterOptions> preset(const std::string& name) {
 }
 
 Map load_map_file(const std::string& path) {
-  return path.ends_with(".vectormap.txt") ? read_amrl_file(path, AmrlOptions{}) : read_seed_file(path);
+  return read_map_file(path);
 }
 
 void report_map_header(std::FILE* out, const std::string& path, const Map& map, const TrialSettings& s) {

@@ -1,6 +1,6 @@
 #pragma once
-// The localization trials of the robot issue, shared by bench-localization and
-// `fleetmap-robot --trials` (one runner, one report):
+// The localization trials (SPEC 6: global localization and tracking on the real maps),
+// shared by bench-localization and `fleetmap-robot --trials` (one runner, one report):
 //
 //  1. global localization: from a compass-only prior, the share of trials whose estimate
 //     is within 0.3 m and 3 degrees after at most `updates` updates and stays so to the

@@ -14,7 +14,7 @@
 #include "client/sim/localization_trials.h"
 #include "client/robot_client.h"
 #include "client/sim/sim_robot.h"
-#include "common/io/amrl_import.h"
+#include "common/io/read_map_file.h"
 #include "common/raycast/grid_ray_caster.h"
 #include "common/io/seed_format.h"
 #include "protocol/connection.h"
@@ -151,10 +151,7 @@ int main(int argc, char** argv) {
     spdlog::info("registered as robot {} ({}); map of {} segments", session.robot_id, s.user, session.map.segment_count());
     client.start_alive(std::chrono::milliseconds(static_cast<int>(session.alive_period_s * 1000)));
     Map truth = session.map;
-    if (world) {
-      const bool amrl = world->size() > 14 && world->substr(world->size() - 14) == ".vectormap.txt";
-      truth = amrl ? read_amrl_file(*world, AmrlOptions{}) : read_seed_file(*world);
-    }
+    if (world) truth = read_map_file(*world);
     SimRobot robot(client, truth, {start[0], start[1], start[2]}, session.map, o);
     // An operator's initial pose (GetPosIni) starts tracking from it, as with AMCL's
     // initial pose; without one, or with --global, the robot localizes globally.

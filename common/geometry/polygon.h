@@ -1,6 +1,6 @@
 #pragma once
 // Simple polygons in the map frame (metres): the footprints of environment objects, the
-// avoided areas and the bounds of a map (issue 8, seed 002 section 3).
+// avoided areas and the bounds of a map (seed 002 section 3).
 #include <optional>
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 // The semantic layer's interchange format: GeoJSON (RFC 7946 structure, map frame,
-// metres; issue 8). One Feature per object, avoided area or bounds:
+// metres; docs/semantic-layer.md). One Feature per object, avoided area or bounds:
 //   properties.kind     "object" (default) | "avoid" | "bounds"
 //   properties.tag      string (objects)
 //   properties.z        [[zmin, zmax], ...], one per polygon of a Polygon/MultiPolygon

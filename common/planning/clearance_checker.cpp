@@ -48,13 +48,12 @@ ClearanceChecker::ClearanceChecker(const Map& map, PlanningObstacles obstacles, 
   free_ = {border.xmin + radius_, border.ymin + radius_, border.xmax - radius_, border.ymax - radius_};
   if (!(free_.xmin <= free_.xmax && free_.ymin <= free_.ymax)) return;  // nowhere to stand
 
-  cell_ = options.cell > 0 ? options.cell : std::clamp(2 * radius_, 0.5, 2.0);
+  double cell = options.cell > 0 ? options.cell : std::clamp(2 * radius_, 0.5, 2.0);
   const double w = free_.xmax - free_.xmin, h = free_.ymax - free_.ymin;
-  if ((w / cell_ + 1) * (h / cell_ + 1) > kMaxCells) cell_ = std::sqrt(w * h / kMaxCells) + cell_;
-  inv_cell_ = 1 / cell_;
-  corner_ = {free_.xmin, free_.ymin};
-  nx_ = static_cast<int>(std::floor(w * inv_cell_)) + 1;
-  ny_ = static_cast<int>(std::floor(h * inv_cell_)) + 1;
+  if ((w / cell + 1) * (h / cell + 1) > kMaxCells) cell = std::sqrt(w * h / kMaxCells) + cell;
+  const double inv_cell = 1 / cell;
+  frame_ = {{free_.xmin, free_.ymin}, cell, static_cast<int>(std::floor(w * inv_cell)) + 1,
+            static_cast<int>(std::floor(h * inv_cell)) + 1};
 
   // Every segment goes into every cell whose closed square is within r of it (plus
   // kPad): a centre nearer than r to the segment lies in one of those cells.
@@ -62,16 +61,14 @@ ClearanceChecker::ClearanceChecker(const Map& map, PlanningObstacles obstacles, 
   std::vector<std::pair<uint32_t, uint32_t>> pairs;  // (cell, segment)
   for (uint32_t i = 0; i < obstacles_.segments.size(); ++i) {
     const BlockingSegment& s = obstacles_.segments[i];
-    for_cells(s.a, s.b, reach, [&](size_t c) {
-      const int ix = static_cast<int>(c % nx_), iy = static_cast<int>(c / nx_);
-      const Rect sq{corner_.x + ix * cell_, corner_.y + iy * cell_, corner_.x + (ix + 1) * cell_,
-                    corner_.y + (iy + 1) * cell_};
-      if (rect_segment_distance2(sq, s.a, s.b) <= reach2) pairs.emplace_back(static_cast<uint32_t>(c), i);
+    frame_.for_cells_near_segment(s.a, s.b, reach, [&](int ix, int iy) {
+      if (rect_segment_distance2(frame_.cell_rect(ix, iy), s.a, s.b) <= reach2)
+        pairs.emplace_back(static_cast<uint32_t>(frame_.index(ix, iy)), i);
       return true;
     });
   }
   // Counting sort by cell: one contiguous block of entries per cell.
-  begin_.assign(static_cast<size_t>(nx_) * ny_ + 1, 0);
+  begin_.assign(frame_.cells() + 1, 0);
   for (const auto& [c, i] : pairs) ++begin_[c + 1];
   for (size_t c = 1; c < begin_.size(); ++c) begin_[c] += begin_[c - 1];
   entries_.resize(pairs.size());
@@ -79,32 +76,6 @@ ClearanceChecker::ClearanceChecker(const Map& map, PlanningObstacles obstacles, 
   for (const auto& [c, i] : pairs) {
     const BlockingSegment& s = obstacles_.segments[i];
     entries_[next[c]++] = {s.a, s.b, i};
-  }
-}
-
-int ClearanceChecker::col(double x) const {
-  return std::clamp(static_cast<int>(std::floor((x - corner_.x) * inv_cell_)), 0, nx_ - 1);
-}
-
-int ClearanceChecker::row(double y) const {
-  return std::clamp(static_cast<int>(std::floor((y - corner_.y) * inv_cell_)), 0, ny_ - 1);
-}
-
-template <class F>
-void ClearanceChecker::for_cells(Point a, Point b, double grow, F&& f) const {
-  const Point e = b - a;
-  const int c0 = col(std::min(a.x, b.x) - grow), c1 = col(std::max(a.x, b.x) + grow);
-  for (int ix = c0; ix <= c1; ++ix) {
-    double u0 = 0, u1 = 1;
-    if (e.x != 0) {
-      const double x0 = corner_.x + ix * cell_ - grow, x1 = x0 + cell_ + 2 * grow;
-      u0 = std::clamp((x0 - a.x) / e.x, 0.0, 1.0);
-      u1 = std::clamp((x1 - a.x) / e.x, 0.0, 1.0);
-    }
-    const double y0 = a.y + u0 * e.y, y1 = a.y + u1 * e.y;
-    const int r1 = row(std::max(y0, y1) + grow);
-    for (int iy = row(std::min(y0, y1) - grow); iy <= r1; ++iy)
-      if (!f(static_cast<size_t>(iy) * nx_ + ix)) return;
   }
 }
 
@@ -116,7 +87,7 @@ bool ClearanceChecker::inside_area(Point p) const {
 
 bool ClearanceChecker::point_clear(Point p) const {
   if (!free_.contains(p) || inside_area(p)) return false;
-  const size_t c = static_cast<size_t>(row(p.y)) * nx_ + col(p.x);
+  const size_t c = cell_of(p);
   for (uint32_t k = begin_[c]; k < begin_[c + 1]; ++k)
     if (point_segment_distance2(p, entries_[k].a, entries_[k].b) <= r2_) return false;
   return true;
@@ -126,22 +97,21 @@ bool ClearanceChecker::motion_clear(Point a, Point b) const {
   // The free rectangle is convex: both ends inside keep the whole motion inside. An area
   // is entered only across its outline, which is among the segments.
   if (!free_.contains(a) || !free_.contains(b) || inside_area(a)) return false;
-  bool clear = true;
   // A segment listed in several cells may be tested more than once; that costs less
   // than remembering which were tested.
-  for_cells(a, b, kPad, [&](size_t c) {
+  return frame_.for_cells_near_segment(a, b, kPad, [&](int ix, int iy) {
+    const size_t c = frame_.index(ix, iy);
     for (uint32_t k = begin_[c]; k < begin_[c + 1]; ++k)
-      if (segment_distance2(a, b, entries_[k].a, entries_[k].b) <= r2_) return clear = false;
+      if (segment_distance2(a, b, entries_[k].a, entries_[k].b) <= r2_) return false;
     return true;
   });
-  return clear;
 }
 
 std::optional<Collision> ClearanceChecker::collision(Point p) const {
   if (!free_.contains(p)) return Collision{Collision::Kind::Border, 0};
   for (const BlockedArea& area : obstacles_.areas)
     if (area.contains(p)) return Collision{Collision::Kind::Area, area.obstacle_id};
-  const size_t c = static_cast<size_t>(row(p.y)) * nx_ + col(p.x);
+  const size_t c = cell_of(p);
   for (uint32_t k = begin_[c]; k < begin_[c + 1]; ++k)
     if (point_segment_distance2(p, entries_[k].a, entries_[k].b) <= r2_)
       return Collision{Collision::Kind::Segment, obstacles_.segments[entries_[k].segment].obstacle_id};

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "common/geometry/geometry.h"
+#include "common/geometry/grid_frame.h"
 #include "common/map/map.h"
 #include "common/planning/planning_obstacles.h"
 
@@ -54,7 +55,7 @@ class ClearanceChecker {
   std::optional<Collision> collision(Point p) const;  // nullopt when point_clear(p)
 
   // The index, for benchmarks and tests.
-  double cell() const { return cell_; }
+  double cell() const { return frame_.cell; }
   size_t blocking_segments() const { return obstacles_.segments.size(); }
   size_t cell_entries() const { return entries_.size(); }
   size_t memory_bytes() const;
@@ -65,22 +66,15 @@ class ClearanceChecker {
     Point a, b;
     uint32_t segment;  // index into obstacles_.segments
   };
-  int col(double x) const;
-  int row(double y) const;
-  // Calls f(cell index) for every cell that the segment ab grown by `grow` meets (a
-  // superset: the cells of each column between the segment's lowest and highest point
-  // over the column's x range grown by `grow`, themselves grown by `grow`).
-  template <class F>
-  void for_cells(Point a, Point b, double grow, F&& f) const;
+  // The entries of the grid cell nearest p.
+  size_t cell_of(Point p) const { return frame_.index(frame_.clamp_col(p.x), frame_.clamp_row(p.y)); }
   bool inside_area(Point p) const;
 
   double radius_, r2_;
   PlanningObstacles obstacles_;
   Rect free_;
-  double cell_ = 1, inv_cell_ = 1;
-  Point corner_;
-  int nx_ = 0, ny_ = 0;
-  std::vector<uint32_t> begin_;  // nx*ny + 1 offsets into entries_
+  GridFrame frame_;               // over free_
+  std::vector<uint32_t> begin_;  // frame_.cells() + 1 offsets into entries_
   std::vector<Entry> entries_;
 };
 

@@ -1,6 +1,6 @@
 #pragma once
-// Goals by meaning (issue 8): "go to the charging station" becomes a reachable point
-// beside the object, chosen for the robot that will drive there.
+// Goals by meaning (seed 002 section 3.3): "go to the charging station" becomes a
+// reachable point beside the object, chosen for the robot that will drive there.
 //
 //   1. Candidates on the object's outline grown by radius + margin: points offset
 //      outwards from every edge of its footprints and on arcs round their convex

@@ -29,10 +29,9 @@ GridAStar::GridAStar(const Map& map, const GridAStarOptions& options) : res_(opt
   if (cols * rows > kMaxCells)
     throw std::invalid_argument("expected a grid of at most 64 M cells, got " + std::to_string(cols * rows) +
                                 " at resolution " + std::to_string(res_) + " m");
-  corner_ = {b.xmin, b.ymin};
-  nx_ = std::max(1, static_cast<int>(cols));
-  ny_ = std::max(1, static_cast<int>(rows));
-  const size_t n = static_cast<size_t>(nx_) * ny_;
+  frame_ = {{b.xmin, b.ymin}, res_, std::max(1, static_cast<int>(cols)), std::max(1, static_cast<int>(rows))};
+  nx_ = frame_.width;
+  const size_t n = frame_.cells();
 
   const ClearanceChecker inflated(map, {options.radius + res_ * std::sqrt(0.5), options.robot, 0});
   free_.resize(n);
@@ -45,16 +44,12 @@ GridAStar::GridAStar(const Map& map, const GridAStarOptions& options) : res_(opt
 
 size_t GridAStar::free_cells() const { return static_cast<size_t>(std::count(free_.begin(), free_.end(), 1)); }
 
-Point GridAStar::centre(uint32_t c) const {
-  return {corner_.x + (c % nx_ + 0.5) * res_, corner_.y + (c / nx_ + 0.5) * res_};
-}
+Point GridAStar::centre(uint32_t c) const { return frame_.centre(c % nx_, c / nx_); }
 
 std::optional<uint32_t> GridAStar::cell_of(Point p) const {
-  const double fx = std::floor((p.x - corner_.x) / res_), fy = std::floor((p.y - corner_.y) / res_);
-  if (!(fx >= 0 && fx < nx_ && fy >= 0 && fy < ny_)) return std::nullopt;
-  const uint32_t c = static_cast<uint32_t>(fy) * nx_ + static_cast<uint32_t>(fx);
-  if (!free_[c]) return std::nullopt;
-  return c;
+  const std::optional<size_t> c = frame_.index_of(p);
+  if (!c || !free_[*c]) return std::nullopt;
+  return static_cast<uint32_t>(*c);
 }
 
 std::optional<Path> GridAStar::solve(Point start, Point goal) {
@@ -102,7 +97,7 @@ std::optional<Path> GridAStar::solve(Point start, Point goal) {
     const int x = top.c % nx_, y = top.c / nx_;
     for (int k = 0; k < 8; ++k) {
       const int x2 = x + kDx[k], y2 = y + kDy[k];
-      if (x2 < 0 || x2 >= nx_ || y2 < 0 || y2 >= ny_) continue;
+      if (!frame_.inside(x2, y2)) continue;
       const uint32_t c2 = static_cast<uint32_t>(y2) * nx_ + x2;
       if (!free_[c2]) continue;
       touch(c2);

@@ -16,6 +16,7 @@
 #include <optional>
 #include <vector>
 
+#include "common/geometry/grid_frame.h"
 #include "common/map/map.h"
 #include "common/planning/path.h"
 #include "common/planning/planning_obstacles.h"
@@ -39,8 +40,8 @@ class GridAStar {
   std::optional<Path> solve(Point start, Point goal);
 
   size_t expanded() const { return expanded_; }  // by the last solve
-  int nx() const { return nx_; }
-  int ny() const { return ny_; }
+  int nx() const { return frame_.width; }
+  int ny() const { return frame_.height; }
   size_t free_cells() const;
 
  private:
@@ -48,8 +49,8 @@ class GridAStar {
   Point centre(uint32_t c) const;
 
   double res_;
-  Point corner_;
-  int nx_ = 0, ny_ = 0;
+  GridFrame frame_;  // over the border
+  int nx_ = 0;       // frame_.width, for the neighbour arithmetic
   std::vector<uint8_t> free_;      // per cell
   std::vector<float> g_;           // per cell, valid when stamp_ == run_
   std::vector<uint32_t> stamp_;

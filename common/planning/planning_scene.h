@@ -1,5 +1,5 @@
 #pragma once
-// Objects and avoided areas as planning obstacles (issue 8, seed 002 section 3.3): the
+// Objects and avoided areas as planning obstacles (seed 002 section 3.3): the
 // planner's counterpart of common/slicing/scene_laser.h.
 //
 //   element     blocks when the robot's body cannot pass over it, Element::blocks_body:

@@ -34,13 +34,13 @@ CandidateGrid::CandidateGrid(const LaserObstacles& obstacles, double cell, doubl
     : wall_count_(static_cast<uint32_t>(obstacles.walls.size())) {
   if (obstacles.obstacles.empty()) return;
   while (estimate_bytes(obstacles, cell, rmax) > max_bytes) cell *= 2;
-  cell_ = cell;
-  inv_cell_ = 1 / cell;
+  const double inv_cell = 1 / cell;
   const double reach = rmax + kPad;
   const Rect& b = obstacles.bounds;
-  corner_ = {b.xmin - reach - cell_, b.ymin - reach - cell_};
-  nx_ = static_cast<long>(std::floor((b.xmax - b.xmin + 2 * reach) * inv_cell_)) + 3;
-  ny_ = static_cast<long>(std::floor((b.ymax - b.ymin + 2 * reach) * inv_cell_)) + 3;
+  frame_.cell = cell;
+  frame_.origin = {b.xmin - reach - cell, b.ymin - reach - cell};
+  frame_.width = static_cast<int>(std::floor((b.xmax - b.xmin + 2 * reach) * inv_cell)) + 3;
+  frame_.height = static_cast<int>(std::floor((b.ymax - b.ymin + 2 * reach) * inv_cell)) + 3;
 
   struct Entry {
     uint32_t cell;
@@ -49,30 +49,21 @@ CandidateGrid::CandidateGrid(const LaserObstacles& obstacles, double cell, doubl
   };
   // From any point of the cell, a thing at `key` from its centre is at least this far;
   // 1e-5 m covers the float's rounding (1e-6 relative at the few tens of metres of rmax).
-  const double half_diagonal = cell_ * std::sqrt(0.5);
+  const double half_diagonal = cell * std::sqrt(0.5);
   auto lower_bound = [&](float key) {
     const double v = key - half_diagonal - 1e-5 * (1 + key);
     return v > 0 ? std::nextafter(static_cast<float>(v), 0.0f) : 0.0f;
   };
   std::vector<Entry> entries;
-  entries.reserve(estimate_bytes(obstacles, cell_, rmax) / sizeof(Candidate));  // an upper bound
-  auto cell_rect = [&](long ix, long iy) {
-    const double x = corner_.x + ix * cell_, y = corner_.y + iy * cell_;
-    return Rect{x, y, x + cell_, y + cell_};
-  };
+  entries.reserve(estimate_bytes(obstacles, cell, rmax) / sizeof(Candidate));  // an upper bound
   // The cells near r's box that dist2_to_cell puts within reach, keyed by dist2_to_centre.
   auto visit = [&](const Rect& r, uint32_t id, auto&& dist2_to_cell, auto&& dist2_to_centre) {
-    const long x0 = std::max(0L, static_cast<long>(std::floor((r.xmin - reach - corner_.x) * inv_cell_)));
-    const long x1 = std::min(nx_ - 1, static_cast<long>(std::floor((r.xmax + reach - corner_.x) * inv_cell_)));
-    const long y0 = std::max(0L, static_cast<long>(std::floor((r.ymin - reach - corner_.y) * inv_cell_)));
-    const long y1 = std::min(ny_ - 1, static_cast<long>(std::floor((r.ymax + reach - corner_.y) * inv_cell_)));
-    for (long iy = y0; iy <= y1; ++iy)
-      for (long ix = x0; ix <= x1; ++ix) {
-        const Rect c = cell_rect(ix, iy);
-        if (dist2_to_cell(c) > reach * reach) continue;
-        const Point centre{(c.xmin + c.xmax) / 2, (c.ymin + c.ymax) / 2};
-        entries.push_back(
-            {static_cast<uint32_t>(iy * nx_ + ix), static_cast<float>(std::sqrt(dist2_to_centre(centre))), id});
+    const CellRange range = frame_.cells_covering({r.xmin - reach, r.ymin - reach, r.xmax + reach, r.ymax + reach});
+    for (int iy = range.y0; iy <= range.y1; ++iy)
+      for (int ix = range.x0; ix <= range.x1; ++ix) {
+        if (dist2_to_cell(frame_.cell_rect(ix, iy)) > reach * reach) continue;
+        entries.push_back({static_cast<uint32_t>(frame_.index(ix, iy)),
+                           static_cast<float>(std::sqrt(dist2_to_centre(frame_.centre(ix, iy)))), id});
       }
   };
   for (uint32_t i = 0; i < wall_count_; ++i) {

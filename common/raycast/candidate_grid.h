@@ -12,9 +12,11 @@
 // passes its nearest hit, and a scan meets the walls that end most rays first.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
+#include "common/geometry/grid_frame.h"
 #include "common/raycast/ray_rules.h"
 
 namespace fleetmap {
@@ -33,24 +35,21 @@ class CandidateGrid {
 
   // The candidates for a ray from p (empty outside the grid: nothing is within rmax).
   std::span<const Candidate> near(Point p) const {
-    const double fx = (p.x - corner_.x) * inv_cell_, fy = (p.y - corner_.y) * inv_cell_;
-    if (!(fx >= 0 && fy >= 0 && fx < nx_ && fy < ny_)) return {};
-    const size_t c = static_cast<size_t>(fy) * nx_ + static_cast<size_t>(fx);
-    return {list_.data() + offsets_[c], list_.data() + offsets_[c + 1]};
+    const std::optional<size_t> c = frame_.index_of(p);
+    if (!c) return {};
+    return {list_.data() + offsets_[*c], list_.data() + offsets_[*c + 1]};
   }
 
   uint32_t wall_count() const { return wall_count_; }
-  double cell() const { return cell_; }
-  size_t cells() const { return static_cast<size_t>(nx_) * ny_; }
+  double cell() const { return frame_.cell; }
+  size_t cells() const { return frame_.cells(); }
   size_t entries() const { return list_.size(); }
   size_t memory_bytes() const;
   // Bytes the lists would take with this cell size (what the constructor checks).
   static size_t estimate_bytes(const LaserObstacles& obstacles, double cell, double rmax);
 
  private:
-  double cell_ = 1, inv_cell_ = 1;
-  Point corner_;
-  long nx_ = 0, ny_ = 0;
+  GridFrame frame_;
   uint32_t wall_count_ = 0;
   std::vector<uint32_t> offsets_;  // cells() + 1
   std::vector<Candidate> list_;

@@ -20,7 +20,7 @@ Rect grow(const Rect& r, const Rect& by) {
 StairsRule::StairsRule(const Obstacle& stairs, double laser_height) {
   parts_.reserve(stairs.segments.size());
   for (const Segment& s : stairs.segments)
-    parts_.push_back({prepare_segment(s.a, s.b), s.h == 0, s.h != 0 && s.h > laser_height});
+    parts_.push_back({prepare_segment(s.a, s.b), is_stairs_closing(s), stairs_step_stops_laser(s, laser_height)});
 }
 
 bool StairsRule::can_stop() const {
@@ -89,7 +89,7 @@ double RampRule::distance(Point o, Point d) const {
     if (ts[k + 1] < 0) continue;  // behind the origin
     const double enter = std::max(ts[k], 0.0);
     const double z = surface_.height_at(o + enter * d);
-    if (z >= laser_height_) return enter;  // the ramp's side
+    if (ramp_stops_laser(z, laser_height_)) return enter;  // the ramp's side
     if (slope > 0) {
       const double t = enter + (laser_height_ - z) / slope;  // the surface reaches hL
       if (t <= ts[k + 1]) return t;

@@ -1,7 +1,8 @@
 #pragma once
 // What stops a laser ray, by shape type (SPEC 6, seed 000 section 4.1 and Fig. 6), for a
-// laser mounted laser_height (hL) over the floor. Shared by every RayCaster, which only
-// differ in how they find the candidates.
+// laser mounted laser_height (hL) over the floor: the rules of common/map/laser_rules.h
+// applied to one ray. Shared by every RayCaster, which only differ in how they find the
+// candidates.
 //
 //   ST 1-4  a segment with h >= hL stops the ray; a lower one is passed.
 //   ST 5    stairs, as a whole: when the first of its segments that the ray meets is
@@ -23,14 +24,12 @@
 #include <vector>
 
 #include "common/geometry/bounding_circle.h"
+#include "common/map/laser_rules.h"
 #include "common/map/map.h"
 #include "common/map/ramp.h"
 #include "common/raycast/ray_segment.h"
 
 namespace fleetmap {
-
-// ST 1-4 (seed 000 section 4.1: the ray "crosses" segments lower than the laser).
-inline bool stops_laser(double segment_height, double laser_height) { return segment_height >= laser_height; }
 
 class StairsRule {
  public:
@@ -54,7 +53,7 @@ class RampRule {
   RampRule(const Obstacle& ramp, double laser_height);
   double distance(Point o, Point d) const;
   bool contains(Point p) const;  // inside the polygon or within kRayTolerance of it
-  bool can_stop() const { return max_height_ >= laser_height_; }
+  bool can_stop() const { return ramp_stops_laser(max_height_, laser_height_); }
 
  private:
   RampSurface surface_;

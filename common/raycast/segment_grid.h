@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/geometry/grid_frame.h"
 #include "common/raycast/ray_rules.h"
 
 namespace fleetmap {
@@ -30,15 +31,16 @@ class SegmentGrid {
   // cell: side in metres; skip_cap: largest skip stored (metres).
   SegmentGrid(const LaserObstacles& obstacles, double cell, double skip_cap);
 
-  double cell() const { return cell_; }
-  double inv_cell() const { return inv_cell_; }
-  Point corner() const { return corner_; }  // lower-left corner of cell (0, 0)
-  int nx() const { return nx_; }
-  int ny() const { return ny_; }
-  Rect rect() const { return {corner_.x, corner_.y, corner_.x + nx_ * cell_, corner_.y + ny_ * cell_}; }
-  bool empty() const { return nx_ == 0; }
+  const GridFrame& frame() const { return frame_; }
+  double cell() const { return frame_.cell; }
+  double inv_cell() const { return inv_cell_; }  // for walking rays: a product per step, not a quotient
+  Point corner() const { return frame_.origin; }  // lower-left corner of cell (0, 0)
+  int nx() const { return frame_.width; }
+  int ny() const { return frame_.height; }
+  Rect rect() const { return frame_.rect(); }
+  bool empty() const { return frame_.width == 0; }
 
-  const Cell& at(int ix, int iy) const { return cells_[static_cast<size_t>(iy) * nx_ + ix]; }
+  const Cell& at(int ix, int iy) const { return cells_[frame_.index(ix, iy)]; }
   const RaySegment* walls() const { return walls_.data(); }
   const uint32_t* special_lists() const { return special_lists_.data(); }
 
@@ -46,9 +48,8 @@ class SegmentGrid {
   size_t wall_entries() const { return walls_.size(); }
 
  private:
-  double cell_, inv_cell_;
-  Point corner_;
-  int nx_ = 0, ny_ = 0;
+  GridFrame frame_;
+  double inv_cell_;
   std::vector<Cell> cells_;
   std::vector<RaySegment> walls_;
   std::vector<uint32_t> special_lists_;

@@ -1,5 +1,5 @@
 #pragma once
-// The semantic layer of a map (issue 8, seed 002 section 3, seed 004 section II): what
+// The semantic layer of a map (seed 002 section 3, seed 004 section II): what
 // things are, beside the segment map that says where walls are.
 //
 //   Element          a footprint with an optional height range; without one it is 2D and

@@ -1,5 +1,5 @@
 #pragma once
-// Plain queries on a Scene (issue 8, seed 002 section 3.3), by brute force over every
+// Plain queries on a Scene (seed 002 section 3.3), by brute force over every
 // object and area: the reference the database's spatial queries are tested against.
 #include <string>
 #include <vector>

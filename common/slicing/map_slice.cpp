@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/geometry/number_format.h"
+#include "common/map/laser_rules.h"
 #include "common/map/ramp.h"
 #include "common/raycast/ray_rules.h"
 
@@ -30,8 +31,8 @@ std::optional<Obstacle> slice_stairs(const Obstacle& o, double hl) {
   Obstacle out{o.id, o.type, o.semantic, {}, {}};
   bool step = false;
   for (const Segment& s : o.segments) {
-    const bool stops = s.h != 0 && s.h > hl;  // StairsRule: only steps higher than the laser
-    if (stops || s.h == 0) out.segments.push_back(s);
+    const bool stops = stairs_step_stops_laser(s, hl);
+    if (stops || is_stairs_closing(s)) out.segments.push_back(s);
     step = step || stops;
   }
   if (!step) return std::nullopt;
@@ -101,10 +102,13 @@ std::optional<Obstacle> slice_ramp(const Obstacle& o, double hl) {
     if (!(segs[i].b == segs[(i + 1) % segs.size()].a)) ring.push_back({segs[i].b, nullptr});
   }
   const size_t n = ring.size();
-  std::vector<double> z(n);
+  std::vector<double> z(n);  // the surface over hL, for the crossings
+  std::vector<bool> solid(n);  // the vertex is in R
   double area2 = 0;
   for (size_t k = 0; k < n; ++k) {
-    z[k] = surface.height_at(ring[k].p) - hl;
+    const double height = surface.height_at(ring[k].p);
+    z[k] = height - hl;
+    solid[k] = ramp_stops_laser(height, hl);
     area2 += cross(ring[k].p, ring[(k + 1) % n].p);
   }
 
@@ -124,12 +128,13 @@ std::optional<Obstacle> slice_ramp(const Obstacle& o, double hl) {
     const Vertex& v = ring[k];
     const Point p = v.p, q = ring[(k + 1) % n].p;
     const double zp = z[k], zq = z[(k + 1) % n];
-    if (zp >= 0 && zq >= 0) {
+    const bool in_p = solid[k], in_q = solid[(k + 1) % n];
+    if (in_p && in_q) {
       piece(p, q, v.from, pieces);
-    } else if (zp >= 0 || zq >= 0) {
+    } else if (in_p || in_q) {
       const Point c = crossing(p, q, zp, zq);
       crossings.push_back(c);
-      if (zp >= 0) piece(p, c, v.from, pieces);
+      if (in_p) piece(p, c, v.from, pieces);
       else piece(c, q, v.from, pieces);
     }
   }

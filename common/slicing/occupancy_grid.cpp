@@ -10,11 +10,10 @@
 namespace fleetmap {
 namespace {
 
-// Grid coordinates: cell (i, j) is [i, i+1) x [j, j+1).
-Point to_grid(const OccupancyGrid& g, Point p) {
-  return {(p.x - g.origin.x) / g.resolution, (p.y - g.origin.y) / g.resolution};
-}
+// Grid coordinates (GridFrame::to_grid): cell (i, j) is [i, i+1) x [j, j+1).
+Point to_grid(const OccupancyGrid& g, Point p) { return g.frame().to_grid(p); }
 
+// The cell of a grid coordinate.
 int64_t cell_index(double u) { return static_cast<int64_t>(std::floor(u)); }
 
 void mark_rows(OccupancyGrid& g, int64_t col, int64_t lo, int64_t hi, uint8_t value) {

@@ -3,9 +3,9 @@
 // slice, common/slicing/map_slice.h) and, later, of filled polygons (environment objects and
 // keep-out zones, common/scene/scene.h), written as Nav2 map_server's PGM + YAML pair.
 //
-// Cells are half-open squares: cell (col, row) covers [x0 + col r, x0 + (col+1) r) x
-// [y0 + row r, y0 + (row+1) r), with (x0, y0) = origin, the grid's lower-left corner, so
-// every point of the plane is in exactly one cell. A segment occupies every cell that
+// Cells are half-open squares (common/geometry/grid_frame.h): cell (col, row) covers
+// [x0 + col r, x0 + (col+1) r) x [y0 + row r, y0 + (row+1) r), with (x0, y0) = origin,
+// the grid's lower-left corner, so every point of the plane is in exactly one cell. A segment occupies every cell that
 // holds a point of it, plus, where it crosses a grid corner diagonally, the two other
 // cells around that corner (supercover): its cells are 4-connected, so nothing can
 // slip between two diagonal cells. Ties are decided on the grid coordinates
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "common/geometry/geometry.h"
+#include "common/geometry/grid_frame.h"
 #include "common/map/map.h"
 #include "common/geometry/polygon.h"
 
@@ -32,10 +33,12 @@ struct OccupancyGrid {
   int width = 0, height = 0;
   std::vector<uint8_t> cells;  // row-major, row 0 at the bottom (min y), as nav_msgs
 
-  uint8_t at(int col, int row) const { return cells[static_cast<size_t>(row) * width + col]; }
+  GridFrame frame() const { return {origin, resolution, width, height}; }
+  uint8_t at(int col, int row) const { return cells[frame().index(col, row)]; }
   // Cells outside the grid are ignored.
   void set(int64_t col, int64_t row, uint8_t value) {
-    if (col >= 0 && row >= 0 && col < width && row < height) cells[static_cast<size_t>(row) * width + col] = value;
+    const GridFrame f = frame();
+    if (f.inside(col, row)) cells[f.index(col, row)] = value;
   }
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// What a laser at height hL sees of a scene (issue 8, seed 004 section III.A): every
+// What a laser at height hL sees of a scene (seed 004 section III.A): every
 // element whose height range contains hL (and every 2D element) stops rays on its
 // footprint's outline. Added to a segment map as closed-polygon obstacles, so every
 // RayCaster, `fleetmap scan` and the slices include objects without knowing of them.

@@ -5,23 +5,19 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "common/io/amrl_import.h"
+#include "common/io/read_map_file.h"
 #include "common/io/scene_geojson.h"
 #include "common/slicing/scene_laser.h"
-#include "common/io/seed_format.h"
 #include "protocol/map_store.h"
 #include "protocol/scene_store.h"
 
 namespace fleetmap {
 
-bool is_amrl_file(const std::string& file) {
-  const std::string suffix = ".vectormap.txt";
-  return file.size() >= suffix.size() && file.compare(file.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
+bool is_amrl_file(const std::string& file) { return map_file_format(file) == MapFileFormat::Amrl; }
 
 Map load_map_source(const std::string& name, const std::string& file, CliContext& ctx) {
   if (file.empty()) return MapStore(ctx.connection()).load(name);
-  return is_amrl_file(file) ? read_amrl_file(file, AmrlOptions{}) : read_seed_file(file);
+  return read_map_file(file);
 }
 
 void add_object_source_options(CLI::App& cmd, ObjectSource& source) {

@@ -269,7 +269,7 @@ TEST(SceneGeojson, MalformedInputsNameFeatureAndField) {
   }
 }
 
-TEST(SceneGeojson, ErrorTextOfTheIssue) {
+TEST(SceneGeojson, ErrorTextOfAMalformedZCount) {
   try {
     for (const Malformed& c : malformed_cases())
       if (c.name == "z count multi") read_scene_geojson(c.text);
