@@ -1,4 +1,4 @@
-// common/goal_near.*: goals by meaning (issue 8). The goal is outside the object, within
+// common/planning/goal_near.*: goals by meaning. The goal is outside the object, within
 // radius + margin of it (and no nearer than the radius), clear for the robot by the
 // independent judge of scene_planning_test_util.h, and reached by the path returned; the
 // side facing the robot wins; walled-in and unreachable objects are told apart.

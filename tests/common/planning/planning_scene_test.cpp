@@ -1,4 +1,4 @@
-// common/planning_scene.*: objects and avoided areas as planning obstacles (issue 8).
+// common/planning/planning_scene.*: objects and avoided areas as planning obstacles.
 // A table whose top is above a short robot's body and below a tall one's, scenes made by
 // hand; then avoided areas never entered, on the example room and on random scenes, 200
 // start/goal pairs each, every path checked by the independent judge of

@@ -1,5 +1,5 @@
-// common/scene_laser.*: what a laser at height hL sees of the semantic layer (issue 8,
-// seed 004 section III.A). Rays through 2.5D and 3D objects at several heights, with
+// common/slicing/scene_laser.*: what a laser at height hL sees of the semantic layer
+// (seed 004 section III.A). Rays through 2.5D and 3D objects at several heights, with
 // ranges computed by hand, through the seed's ray caster and the fast one; then the
 // example room (maps/example-room.*), its seed map read by the existing reader.
 #include <gtest/gtest.h>
