@@ -13,7 +13,7 @@
 //  3. update rate: one update of NP particles x NL rays on `threads` threads (the seed's
 //     model, one pass), for a tracking cloud and a global one, with the fast caster and
 //     with the seed's bounding-circle caster (the seed's method), the baseline.
-// Goal (robot issue): >= 95 % converged, RMS < 0.10 m, update rate reported.
+// Targets: >= 95 % converged, RMS < 0.10 m; the update rate is reported.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -24,6 +24,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/maps_dir.h"
 #include "client/sim/drive_simulator.h"
 #include "client/sim/laser_simulator.h"
 #include "client/sim/localization_trials.h"
@@ -93,7 +94,7 @@ int main(int argc, char** argv) {
   TrialSettings s;
   std::string config = "all";
   bool skip_global = false, skip_tracking = false, skip_rate = false;
-  app.add_option("--map", maps, "maps (AMRL .vectormap.txt or seed .map); default GDC1 and UT_Campus");
+  app.add_option("--map", maps, "maps (AMRL .vectormap.txt or seed .map); default GDC1 and UT_Campus in " + maps_dir());
   app.add_option("--trials", s.trials, "global localization trials per map")->capture_default_str();
   app.add_option("--seed", s.seed, "seed of every random draw")->capture_default_str();
   app.add_option("--particles", s.filter.particles, "NP")->capture_default_str();
@@ -128,7 +129,7 @@ int main(int argc, char** argv) {
     }
   s.look_around_turn = deg2rad(turn_deg);
   if (per_trial) s.per_trial = stdout;
-  if (maps.empty()) maps = {"maps/amrl/GDC1.vectormap.txt", "maps/amrl/UT_Campus.vectormap.txt"};
+  if (maps.empty()) maps = {real_map_path("GDC1.vectormap.txt"), real_map_path("UT_Campus.vectormap.txt")};
   for (const std::string& m : maps) bench_map(m, s, configs, skip_global, skip_tracking, skip_rate);
   return 0;
 }

@@ -1,4 +1,4 @@
-// Map import and window-query benchmark (issue: foundation). Builds a ~1 M-segment
+// Map import and window-query benchmark (SPEC 8, 9). Builds a ~1 M-segment
 // map by tiling the campus map, imports it in one transaction, then answers random
 // 100 m x 100 m windows with the spatial index and, as the baseline, with a full scan
 // of the same map, in the same run. Driven by scripts/bench-map.sh (private MariaDB).
@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/maps_dir.h"
 #include "common/io/amrl_import.h"
 #include "common/map/map_window.h"
 #include "protocol/connection.h"
@@ -53,7 +54,7 @@ fleetmap::Map tile(const fleetmap::Map& m, int tiles) {
 int main(int argc, char** argv) {
   using namespace fleetmap;
   CLI::App app{"bench-map: import a tiled ~1 M-segment map, then time window queries (index vs full scan)"};
-  std::string campus = "maps/amrl/UT_Campus.vectormap.txt";
+  std::string campus = real_map_path("UT_Campus.vectormap.txt");
   int tiles = 26, windows = 200;
   double size = 100;
   unsigned seed = 7;

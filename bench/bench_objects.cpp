@@ -1,4 +1,4 @@
-// `objects near` benchmark (issue 8). Generates a map with 100 000 objects (random
+// `objects near` benchmark (the semantic layer, SPEC 8). Generates a map with 100 000 objects (random
 // rectangles, ten tags), imports it in one transaction, then times the k nearest objects
 // with a tag from random points: SceneStore::near with the spatial index and a growing
 // search box (the product) beside two full scans of the same map in the same run: every

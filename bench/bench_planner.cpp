@@ -4,7 +4,7 @@
 // planning time (median, p95) of both, and the smoothed length over A*'s length.
 // A* carries the 8-connected grid's detour; "A* shortcut" (A*'s path through the same
 // smoother) is the tighter, any-angle reference, printed beside it.
-// Goals (planning issue): median planning time <= 100 ms, length ratio <= 1.1.
+// Targets: median planning time <= 100 ms, length ratio <= 1.1.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -15,6 +15,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/maps_dir.h"
 #include "common/io/read_map_file.h"
 #include "common/planning/grid_astar.h"
 #include "common/planning/map_planner.h"
@@ -44,7 +45,7 @@ struct Pair {
 
 int main(int argc, char** argv) {
   CLI::App app{"bench-planner: RRT-Connect + smoothing vs grid A* on the same random reachable pairs"};
-  std::string map_path = "maps/amrl/UT_Campus.vectormap.txt";
+  std::string map_path = real_map_path("UT_Campus.vectormap.txt");
   size_t pairs_n = 200;
   double resolution = 0.2;
   unsigned seed = 1;

@@ -3,7 +3,7 @@
 // the same run with the seed's parameters (RMAX 15 m, NL 131 beams over 180 degrees,
 // hL 0.3 m) from random poses: rays/s on 1 and 2 threads, the fast/seed ratio, one
 // particle-filter update (NP 6000 poses x NL 131 rays) in Hz, and the fast structure's
-// memory. Goal (robot issue): >= 40 M rays/s on 2 cores, >= 150x the seed, update
+// memory. Targets: >= 40 M rays/s on 2 cores, >= 150x the seed, update
 // >= 50 Hz, structure < 256 MiB.
 //
 // The machine is shared: besides wall-clock rates (best of --repeats runs) it prints
@@ -19,6 +19,7 @@
 #include <thread>
 #include <vector>
 
+#include "app/maps_dir.h"
 #include "common/io/read_map_file.h"
 #include "common/raycast/grid_ray_caster.h"
 #include "common/raycast/seed_ray_caster.h"
@@ -116,7 +117,7 @@ void row(const std::string& name, Rate one, Rate many, const std::string& note) 
 
 int main(int argc, char** argv) {
   CLI::App app{"bench-raycast: the seed's bounding-circle ray casting vs the fast caster, same run"};
-  std::string map_path = "maps/amrl/UT_Campus.vectormap.txt";
+  std::string map_path = real_map_path("UT_Campus.vectormap.txt");
   RayCasterOptions opt{0.3, 15.0};
   int beams_n = 131, particles = 6000, repeats = 3, threads = 2;
   size_t poses_fast = 30000, poses_seed = 5000;

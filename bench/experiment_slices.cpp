@@ -1,4 +1,4 @@
-// Experiment of seed 004 section III.A, Fig. 9-10 (issue 8): a robot whose laser is
+// Experiment of seed 004 section III.A, Fig. 9-10: a robot whose laser is
 // mounted at h1 = 0.381 m drives 100 m and tracks with the particle filter on the map
 // sliced at its own height (Fig. 10, "map of correct height") and on the map sliced at
 // the other laser's height h2 = 0.794 m (Fig. 9, "map of wrong height"). Both maps hold
@@ -15,8 +15,8 @@
 //
 // Reported per scene and map: RMS position error pooled over every update of every run,
 // the median and 90th percentile of the runs' RMS, the largest error, and the share of
-// runs that diverge (error above --diverged metres at some update). The robot issue's
-// tracking goal is RMS < 0.10 m for the right map; the seed's claim is that the wrong
+// runs that diverge (error above --diverged metres at some update). The tracking
+// target is RMS < 0.10 m for the right map (bench-localization); the seed's claim is that the wrong
 // map localizes worse where the heights differ (area B of Fig. 9).
 #include <algorithm>
 #include <chrono>

@@ -1,10 +1,10 @@
-// Experiment of seed 002 section 4, Fig. 8 (issue 8): what the robot's map handling costs
+// Experiment of seed 002 section 4, Fig. 8: what the robot's map handling costs
 // with a zoom window (seed 002 section 3.4, client/zoom_map.h) against the whole map,
 // along one drive on the campus. The seed reports 75 % (worst case) to 90 % (best) less
 // time with the zoom map, the costs of checking the triggers and of the refreshes
 // included.
 //
-// One drive (seeded) over the whole campus map (maps/amrl/UT_Campus.vectormap.txt): the
+// One drive (seeded) over the whole campus map (UT_Campus.vectormap.txt in maps_dir()): the
 // simulated robot wanders --drive metres, odometry and laser simulated on the whole map.
 // The same odometry and scans feed two particle filters (tracking, seed 000's model):
 //
@@ -33,6 +33,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/maps_dir.h"
 #include "client/sim/drive_simulator.h"
 #include "client/localization/free_space.h"
 #include "client/sim/laser_simulator.h"
@@ -54,7 +55,7 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 struct Settings {
-  std::string map = "maps/amrl/UT_Campus.vectormap.txt";
+  std::string map = fleetmap::real_map_path("UT_Campus.vectormap.txt");
   double drive = 300;
   double window = 40, refresh = 10;
   size_t particles = 500, seed_particles = 500, brute_particles = 50;

@@ -20,10 +20,13 @@
 #     --long              longer windows: --seconds 60 --scaling-seconds 40 --idle-seconds 30
 #     --no-lean           skip the lean prototype rows
 #     --no-build          use the binaries in the build folder as they are
-# Environment: FLEETMAP_BUILD_DIR (default build), FLEETMAP_BENCH_PORT (default 33318).
+# Environment: FLEETMAP_BUILD_DIR (default build), FLEETMAP_BENCH_PORT (default 33318),
+# FLEETMAP_MAPS_DIR (the real maps, default ../shared/maps beside the checkout).
 # Results: <build>/benchsrv/results-<time>.jsonl (one JSON line per run), tables at the end.
 # Robot accounts lg0001... are created once with `fleetmap robot add` and reused.
 set -euo pipefail
+source "$(dirname "$0")/real-maps.sh"
+require_real_maps bench-server UT_Campus.vectormap.txt
 cd "$(dirname "$0")/.."
 BUILD="${FLEETMAP_BUILD_DIR:-build}"
 BIN="$BUILD/bin"
@@ -82,7 +85,7 @@ echo "bench-server: max_connections $MAXC, open_files_limit $(sql "SELECT @@open
      "innodb_flush_log_at_trx_commit $(sql "SELECT @@innodb_flush_log_at_trx_commit")"
 
 if ! "$BIN/fleetmap" map list | grep -qw UT_Campus; then
-  "$BIN/fleetmap" map import maps/amrl/UT_Campus.vectormap.txt --name UT_Campus
+  "$BIN/fleetmap" map import "$MAPS/UT_Campus.vectormap.txt" --name UT_Campus
 fi
 
 # Robot accounts lg0001..lgNNNN: reuse those that exist with their password file.

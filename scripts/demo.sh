@@ -8,8 +8,11 @@
 #   scripts/db.sh sql        # administrator
 #   scripts/db.sh stop
 # Settings: FLEETMAP_HOME (instance folder), FLEETMAP_PORT (default 33306),
-# DEMO_TIMEOUT (seconds to wait for the robots, default 150).
+# DEMO_TIMEOUT (seconds to wait for the robots, default 150), FLEETMAP_MAPS_DIR (the real
+# maps, default ../shared/maps beside the checkout).
 set -euo pipefail
+source "$(dirname "$0")/real-maps.sh"
+require_real_maps demo GDC1.vectormap.txt UT_Campus.vectormap.txt
 cd "$(dirname "$0")/.."
 BUILD="${FLEETMAP_BUILD_DIR:-build}"
 BIN="$PWD/$BUILD/bin"
@@ -31,9 +34,9 @@ step "private MariaDB ($FLEETMAP_HOME)"
 bash scripts/db.sh start
 CONF="$FLEETMAP_HOME/fleetmap.conf"
 
-step "import the real maps (AMRL vector maps) and the example campus"
-"$FM" map import maps/amrl/GDC1.vectormap.txt --name GDC1 --replace
-"$FM" map import maps/amrl/UT_Campus.vectormap.txt --name UT_Campus --in-out 1 --semantic wall,building --replace
+step "import the real maps (AMRL vector maps, $MAPS) and the example campus"
+"$FM" map import "$MAPS/GDC1.vectormap.txt" --name GDC1 --replace
+"$FM" map import "$MAPS/UT_Campus.vectormap.txt" --name UT_Campus --in-out 1 --semantic wall,building --replace
 "$FM" map import maps/example-campus.map --name example-campus --replace
 "$FM" map list
 

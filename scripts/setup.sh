@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 PACKAGES=(
-  build-essential cmake pkg-config ccache git
+  build-essential cmake pkg-config ccache git python3
   libmysql++-dev mariadb-server mariadb-client
   libboost-dev libboost-system-dev libeigen3-dev nlohmann-json3-dev libcli11-dev
   libspdlog-dev zlib1g-dev googletest libgtest-dev libgmock-dev libbenchmark-dev

@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
+#include "app/maps_dir.h"
 #include "client/sim/localization_trials.h"
 #include "client/robot_client.h"
 #include "client/sim/sim_robot.h"
@@ -49,7 +50,7 @@ int run_trials(int trials, std::vector<std::string> maps, const std::string& pre
       std::cerr << "--presets: expected seed, robust or search, got " << n << "\n";
       return 64;
     }
-  if (maps.empty()) maps = {"maps/amrl/GDC1.vectormap.txt", "maps/amrl/UT_Campus.vectormap.txt"};
+  if (maps.empty()) maps = {fleetmap::real_map_path("GDC1.vectormap.txt"), fleetmap::real_map_path("UT_Campus.vectormap.txt")};
   try {
     for (const std::string& path : maps) {
       const fleetmap::Map map = loc::load_map_file(path);
@@ -112,7 +113,8 @@ int main(int argc, char** argv) {
                  "run N global localization trials per map (and a 200 m tracking run) on simulated sensors, print "
                  "the report of bench-localization and exit; no database");
   app.add_option("--map-file", map_files, "maps for --trials (AMRL .vectormap.txt or seed .map); default "
-                                          "maps/amrl/GDC1 and UT_Campus");
+                                          "GDC1 and UT_Campus in " + fleetmap::maps_dir() +
+                                          " ($FLEETMAP_MAPS_DIR)");
   app.add_option("--presets", presets, "filter presets for --trials, comma-separated: seed (the baseline), robust, "
                                        "search (the robot's)")->capture_default_str();
   app.add_flag("--skip-tracking", skip_tracking, "--trials: global localization only");

@@ -14,6 +14,7 @@
 #include "protocol/map_store.h"
 #include "protocol/topo_store.h"
 #include "app/exit_codes.h"
+#include "app/maps_dir.h"
 #include "server/cli/map_source.h"
 
 namespace fleetmap {
@@ -93,7 +94,7 @@ void add_topo_commands(CLI::App& app, CliContext& ctx, int* exit_code) {
   {
     auto file = std::make_shared<std::string>();
     auto* cmd = topo->add_subcommand("check", "validate a navigation graph (JSON) without touching the database");
-    cmd->add_option("FILE", *file, "navigation graph, e.g. maps/amrl/UT_Campus.navigation.json")->required();
+    cmd->add_option("FILE", *file, "navigation graph, e.g. " + real_map_path("UT_Campus.navigation.json"))->required();
     cmd->callback([=] {
       guarded(exit_code, [&]() -> int {
         const TopoGraph g = read_topo_json_file(*file);

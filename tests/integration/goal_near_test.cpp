@@ -1,4 +1,4 @@
-// Goals by meaning and planning with objects through the real programs (issue 8):
+// Goals by meaning and planning with objects through the real programs (docs/semantic-layer.md):
 // `fleetmap goal ROBOT --near TAG` on the example room with its objects (the goal beside
 // the charging station, checked with polygon distances; exit codes), and GetPath keeping
 // to the robot's profile and out of the avoided areas, an area added while the server

@@ -66,7 +66,7 @@ TEST(PlanCommand, NoPathAndBlockedEndsExitWith3) {
   EXPECT_NE(r.err.find("stairs of obstacle 6"), std::string::npos) << r.err;
 }
 
-// Issue 8: the stored map's objects and avoided areas block (by body height), the same as
+// The stored map's objects and avoided areas block (by body height), the same as
 // a file with --objects; --no-objects plans on the segments alone.
 TEST(PlanCommand, ObjectsAndAvoidedAreasBlock) {
   const std::string map = source_path("maps/example-room.map"), objects = source_path("maps/example-room.geojson");

@@ -1,4 +1,4 @@
-// Each robot is served the map its laser sees (issue 8): robots with different laser
+// Each robot is served the map its laser sees (seed 004 section III.A): robots with different laser
 // heights on the example room (maps/example-room.map + .geojson) ask for the same window
 // and read their answers with plain SQL from their own sa_mine; "2.5d" mode; a profile
 // changed with `robot set`; SetObject observations in the maps and their expiry; a robot

@@ -1,4 +1,4 @@
-// fleetmap robot add|set|list with a profile (issue 8): laser height, radius, body
+// fleetmap robot add|set|list with a profile (SPEC 6, seed 004): laser height, radius, body
 // height, stairs and ramps, through the real program; values land in robots' columns,
 // bad values are refused with exit code 2 and change nothing.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// fleetmap scan and fleetmap map slice include the map's objects (issue 8): the example
+// fleetmap scan and fleetmap map slice include the map's objects (docs/semantic-layer.md): the example
 // room (maps/example-room.map + example-room.geojson) imported with the real program, a
 // scan through the big table at two laser heights (legs vs top) against ranges worked
 // out by hand, and slices at two heights that differ by exactly the expected outlines.

@@ -1,4 +1,4 @@
-// The semantic layer in a real MariaDB (issue 8, protocol/scene_store.h): the example
+// The semantic layer in a real MariaDB (protocol/scene_store.h): the example
 // scene stored and read back, nearest objects and avoided areas against the brute-force
 // reference of common/scene/scene_query.h, imports that fail change nothing, --replace, tags,
 // the spatial index, observations and their expiry, the inspector's views and the SQL

@@ -50,7 +50,7 @@ struct RunResult {
 RunResult run(const std::string& program, const std::string& args);
 
 std::string source_path(const std::string& relative);  // under the checkout
-std::string real_map(const std::string& file);         // maps/amrl/<file>
+std::string real_map(const std::string& file);         // FLEETMAP_REAL_MAPS/<file>
 std::string temp_path(const std::string& name);        // a scratch file for this test run
 std::string instance_home();                           // the test instance's folder
 std::string db_script();                               // "FLEETMAP_HOME=... FLEETMAP_PORT=... bash scripts/db.sh"

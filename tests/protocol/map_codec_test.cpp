@@ -22,10 +22,7 @@
 namespace fleetmap {
 namespace {
 
-// protocol_tests has no FLEETMAP_SOURCE_DIR: this file is <root>/tests/protocol/.
-std::filesystem::path repo_root() {
-  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path();
-}
+std::filesystem::path repo_root() { return FLEETMAP_SOURCE_DIR; }
 
 std::string slurp(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -214,7 +211,7 @@ TEST(CodecMapPayload, SetMapParamsDescribeTheMap) {
 // Informational (no assertion on the figures): SetMap payload size per square metre of
 // map for both encodings, on the UT campus (AMRL import, default options; area = border).
 TEST(CodecMapPayloadDensity, UtCampusBytesPerSquareMetre) {
-  const std::filesystem::path file = repo_root() / "maps" / "amrl" / "UT_Campus.vectormap.txt";
+  const std::filesystem::path file = std::filesystem::path(FLEETMAP_REAL_MAPS) / "UT_Campus.vectormap.txt";
   ASSERT_TRUE(std::filesystem::exists(file)) << file;
   AmrlReport rep;
   const Map m = read_amrl_file(file.string(), AmrlOptions{}, &rep);

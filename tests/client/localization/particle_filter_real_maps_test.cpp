@@ -1,4 +1,4 @@
-// ParticleFilter on the real maps (maps/amrl): global localization from a compass-only
+// ParticleFilter on the real maps (FLEETMAP_REAL_MAPS): global localization from a compass-only
 // prior on GDC1 (a building floor, 6 450 m2) and UT_Campus (0.2 km2) with NP 6000,
 // tracking along driven paths, and the switch to map windows around the robot. Seeded
 // runs, so each is reproducible; bench-localization measures the rates over 100 trials.

@@ -1,4 +1,4 @@
-// common/polygon.*: hand-computed cases (convex, concave, boundary, bow-tie, repeated
+// common/geometry/polygon.*: hand-computed cases (convex, concave, boundary, bow-tie, repeated
 // and collinear points), points next to an edge by one ulp, and point_in_polygon /
 // distance_to_polygon against references written here on random star-shaped polygons
 // with integer vertices (many points fall exactly on edges and vertices).

@@ -1,4 +1,4 @@
-// The AMRL vector-map importer (common/io/amrl_import.h) on the real maps of maps/amrl/ and
+// The AMRL vector-map importer (common/io/amrl_import.h) on the real maps (FLEETMAP_REAL_MAPS) and
 // on hand-written malformed input.
 #include <gtest/gtest.h>
 

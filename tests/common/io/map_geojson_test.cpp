@@ -1,4 +1,4 @@
-// common/map_geojson.*: the GeoJSON (RFC 7946) writer. The output is parsed back with
+// common/io/map_geojson.*: the GeoJSON (RFC 7946) writer. The output is parsed back with
 // nlohmann::json and compared with the model, numbers bit for bit.
 #include <gtest/gtest.h>
 

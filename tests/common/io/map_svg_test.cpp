@@ -1,4 +1,4 @@
-// common/map_svg.*: the SVG picture. Checked as text, without an XML library:
+// common/io/map_svg.*: the SVG picture. Checked as text, without an XML library:
 // well-formedness basics, one element per segment, the map-to-pixel transform
 // (map_svg.h), colours, tracks and escaping.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// common/scene_geojson.*: the example room's contents as written in the file, round
+// common/io/scene_geojson.*: the example room's contents as written in the file, round
 // trips (numbers bit for bit, mixed 2D/2.5D elements, awkward text), generated ids, tag
 // checks, the tag table, and malformed inputs: each names the feature and the field,
 // and nothing is returned.

@@ -1,4 +1,4 @@
-// common/scene_query.*: nearest objects and avoided areas containing a point, by hand and
+// common/scene/scene_query.*: nearest objects and avoided areas containing a point, by hand and
 // against references written here (winding number, own point-segment distance) on
 // 1 000 random points of the example room.
 #include <gtest/gtest.h>
