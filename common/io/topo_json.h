@@ -1,5 +1,5 @@
 #pragma once
-// The navigation-graph JSON of the AMRL maps (maps/amrl/*.navigation.json), read into a
+// The navigation-graph JSON of the AMRL maps (ut-amrl/amrl_maps *.navigation.json), read into a
 // TopoGraph and written back. Reader -> validator -> model in one pass: every node and
 // edge is checked before the graph is built, and the first problem is reported with the
 // element's index and field: "campus.json: edges[12].s1_id: expected the id of a node, got 400".

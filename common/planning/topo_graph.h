@@ -4,7 +4,7 @@
 //
 // Edge types. Seed 003 has three: corridor, room and door ("nodes have to be placed at
 // every position of the environment where the edge type would change"). The AMRL
-// navigation graphs (maps/amrl/*.navigation.json) have no types, only flags; we add
+// navigation graphs (ut-amrl/amrl_maps *.navigation.json) have no types, only flags; we add
 // stairs and elevator because a wheeled robot must be able to refuse them. From the
 // flags, in this order: has_stairs -> stairs, has_elevator -> elevator, has_door or
 // has_automated_door -> door, none -> corridor. Stairs come first because avoiding them
