@@ -5,7 +5,7 @@ set(CPACK_PACKAGE_NAME fleetmap)
 set(CPACK_PACKAGE_VENDOR "fleetmap")
 set(CPACK_PACKAGE_CONTACT "fleetmap maintainers <fleetmap@example.org>")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "GIS map service for robot fleets: server, operator CLI and robot client library")
-set(CPACK_PACKAGE_DESCRIPTION
+string(CONCAT CPACK_PACKAGE_DESCRIPTION
   "fleetmap serves vector maps to robot fleets over MariaDB (RR/SA tables): fleetmap-server, "
   "the fleetmap operator command, the simulated robot fleetmap-robot, and the C++ client "
   "library a real robot links (find_package(fleetmap), fleetmap::client).")
