@@ -10,7 +10,8 @@ PACKAGES=(
   build-essential cmake pkg-config ccache git python3
   libmysql++-dev mariadb-server mariadb-client
   libboost-dev libboost-system-dev libeigen3-dev nlohmann-json3-dev libcli11-dev
-  libspdlog-dev zlib1g-dev googletest libgtest-dev libgmock-dev libbenchmark-dev
+  libspdlog-dev zlib1g-dev googletest libgtest-dev libgmock-dev
+  dpkg-dev file
 )
 
 missing=()

@@ -52,6 +52,19 @@ WeightedMean weighted_mean(const std::vector<Pose>& poses, const std::vector<dou
   return m;
 }
 
+// Sum over the particles of w(i) d d^T, d = position - mean: the covariance of x and y
+// times the weights' sum.
+template <typename Weight>
+Eigen::Matrix2d position_scatter(const std::vector<Pose>& poses, const Pose& mean, Weight w) {
+  Eigen::Matrix2d s = Eigen::Matrix2d::Zero();
+  const Eigen::Vector2d m = position(mean);
+  for (size_t i = 0; i < poses.size(); ++i) {
+    const Eigen::Vector2d d = position(poses[i]) - m;
+    s.noalias() += (w(i) * d) * d.transpose();
+  }
+  return s;
+}
+
 uint64_t cell_key(int64_t ix, int64_t iy) { return static_cast<uint64_t>(ix) << 32 ^ static_cast<uint32_t>(iy); }
 
 }  // namespace
@@ -358,16 +371,12 @@ void ParticleFilter::roughen() {
   // Per-dimension standard deviations of the (equally weighted) resampled cloud.
   const double n = static_cast<double>(poses_.size());
   const WeightedMean m = weighted_mean(poses_, weights_, [](size_t) { return true; });
-  double vx = 0, vy = 0;
-  for (const Pose& p : poses_) {
-    vx += (p.x - m.pose.x) * (p.x - m.pose.x);
-    vy += (p.y - m.pose.y) * (p.y - m.pose.y);
-  }
+  const Eigen::Matrix2d cov = position_scatter(poses_, m.pose, [](size_t) { return 1.0; }) / n;
   const double r = std::min(1.0, std::hypot(m.cos_sum, m.sin_sum) / m.weight);
   const double spread_theta = r > 0 ? std::sqrt(-2 * std::log(r)) : kPi;
   const double scale = options_.roughening * std::pow(n, -1.0 / 3.0);
-  const double sx = std::min(options_.roughening_max_xy, scale * std::sqrt(vx / n));
-  const double sy = std::min(options_.roughening_max_xy, scale * std::sqrt(vy / n));
+  const double sx = std::min(options_.roughening_max_xy, scale * std::sqrt(cov(0, 0)));
+  const double sy = std::min(options_.roughening_max_xy, scale * std::sqrt(cov(1, 1)));
   const double st = std::min(options_.roughening_max_theta, scale * spread_theta);
   parallel_for(options_.threads, poses_.size(), [&](int k, size_t begin, size_t end) {
     std::mt19937_64& rng = chunk_rngs_[k];
@@ -384,15 +393,12 @@ PoseEstimate ParticleFilter::estimate() const {
   e.particles = poses_.size();
   if (poses_.empty()) return e;
   const WeightedMean all = weighted_mean(poses_, weights_, [](size_t) { return true; });
-  double var = 0, sum_sq = 0;
-  for (size_t i = 0; i < poses_.size(); ++i) {
-    const Pose& p = poses_[i];
-    var += weights_[i] * ((p.x - all.pose.x) * (p.x - all.pose.x) + (p.y - all.pose.y) * (p.y - all.pose.y));
-    sum_sq += weights_[i] * weights_[i];
-  }
+  double sum_sq = 0;
+  for (double w : weights_) sum_sq += w * w;
   const double r = std::min(1.0, std::hypot(all.cos_sum, all.sin_sum) / all.weight);
   e.mean = all.pose;
-  e.spread_xy = std::sqrt(var / all.weight);
+  e.covariance = position_scatter(poses_, all.pose, [&](size_t i) { return weights_[i]; }) / all.weight;
+  e.spread_xy = std::sqrt(e.covariance.trace());
   e.spread_theta = r > 0 ? std::sqrt(-2 * std::log(r)) : kPi;
   e.n_eff = all.weight * all.weight / sum_sq;
   e.converged = e.spread_xy < options_.converged_xy && e.spread_theta < options_.converged_theta;

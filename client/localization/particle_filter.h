@@ -121,6 +121,8 @@ struct PoseEstimate {
   Pose mean;                // weighted mean of every particle; theta the circular mean
   double cluster_weight = 0;  // the heaviest cluster's share of the weight
   double spread_xy = 0;     // metres: sqrt(weighted var x + var y), every particle
+  // m^2: weighted covariance of x and y, every particle (what AMCL publishes with its pose).
+  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();
   double spread_theta = 0;  // radians: sqrt(-2 ln R), R the mean resultant length
   double n_eff = 0;         // 1 / sum w^2 of the normalized weights
   size_t particles = 0;

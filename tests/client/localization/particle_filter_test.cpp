@@ -107,6 +107,19 @@ TEST(ParticleFilter, EstimateReportsTheHeaviestCluster) {
   EXPECT_THROW(f.set_particles(poses, std::vector<double>(poses.size(), 0.0)), std::invalid_argument);
 }
 
+TEST(ParticleFilter, EstimateReportsTheWeightedCovariance) {
+  // Worked by hand: weights 1, 1, 2 -> mean (3.5, 2.5); var x = var y = 3/4, cov xy = 1/4.
+  const Map m = test::room_map();
+  ParticleFilter f(m, small(3));
+  f.set_particles({{2, 2, 0}, {4, 4, 0}, {4, 2, 0}}, {1, 1, 2});
+  const PoseEstimate e = f.estimate();
+  EXPECT_NEAR(e.covariance(0, 0), 0.75, 1e-12);
+  EXPECT_NEAR(e.covariance(1, 1), 0.75, 1e-12);
+  EXPECT_NEAR(e.covariance(0, 1), 0.25, 1e-12);
+  EXPECT_NEAR(e.covariance(1, 0), 0.25, 1e-12);
+  EXPECT_NEAR(e.spread_xy, std::sqrt(1.5), 1e-12);
+}
+
 TEST(ParticleFilter, SetMapKeepsParticlesAndWeights) {
   const Map m = test::room_map();
   const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
