@@ -10,11 +10,13 @@
 
 #include <mysql++/mysql++.h>
 
+#include "common/core/error.h"
+
 namespace fleetmap {
 
-class RobotNotFound : public std::runtime_error {
+class RobotNotFound : public NotFound {
  public:
-  explicit RobotNotFound(const std::string& name) : std::runtime_error("no robot named '" + name + "'") {}
+  explicit RobotNotFound(const std::string& name) : NotFound("no robot named '" + name + "'") {}
 };
 
 struct RobotStatus {
