@@ -1,9 +1,6 @@
 #include "app/cli_context.h"
 
-#include <fstream>
-#include <sstream>
-#include <stdexcept>
-
+#include "app/password_file.h"
 #include "protocol/connection.h"
 
 namespace fleetmap {
@@ -30,14 +27,7 @@ DbSettings CliContext::settings() const {
   if (socket_) s.socket = *socket_;
   if (database_) s.database = *database_;
   if (user_) s.user = *user_;
-  if (password_file_) {
-    std::ifstream in(*password_file_);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    std::string pw = ss.str();
-    while (!pw.empty() && (pw.back() == '\n' || pw.back() == '\r')) pw.pop_back();
-    s.password = pw;
-  }
+  if (password_file_) s.password = read_password_file(*password_file_);
   return s;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // What every operator command shares: connection flags (over config file and
-// environment, protocol/db_settings.h) and opening the connection once asked.
+// environment, protocol/db_settings.h), opening the connection once asked, and the exit
+// code of the command that ran.
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,11 +23,16 @@ class CliContext {
   DbSettings settings() const;
   mysqlpp::Connection& connection();  // connects on first use
 
+  // Set by the command that ran (its callback runs inside CLI::App::parse); main returns it.
+  void set_exit_code(int code) { exit_code_ = code; }
+  int exit_code() const { return exit_code_; }
+
  private:
   Role role_;
   std::optional<std::string> config_, host_, socket_, database_, user_, password_file_;
   std::optional<unsigned> port_;
   std::unique_ptr<mysqlpp::Connection> conn_;
+  int exit_code_ = 0;
 };
 
 }  // namespace fleetmap

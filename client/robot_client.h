@@ -19,6 +19,7 @@
 
 #include <mysql++/mysql++.h>
 
+#include "common/core/error.h"
 #include "common/map/map.h"
 #include "protocol/db_settings.h"
 #include "protocol/params.h"
@@ -26,9 +27,9 @@
 
 namespace fleetmap {
 
-class RobotClientError : public std::runtime_error {
+class RobotClientError : public Failure {
  public:
-  using std::runtime_error::runtime_error;
+  using Failure::Failure;
 };
 
 struct RobotSession {

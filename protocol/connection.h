@@ -7,14 +7,15 @@
 
 #include <mysql++/mysql++.h>
 
+#include "common/core/error.h"
 #include "protocol/db_settings.h"
 
 namespace fleetmap {
 
 // A database problem a person can act on: names the server and account.
-class DbError : public std::runtime_error {
+class DbError : public Failure {
  public:
-  using std::runtime_error::runtime_error;
+  using Failure::Failure;
 };
 
 // Connects (utf8mb4, READ COMMITTED: a server's SELECT ... FOR UPDATE must not take gap

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/core/error.h"
+
 namespace fleetmap {
 namespace {
 
@@ -22,12 +24,12 @@ unsigned parse_port(const std::string& v, const std::string& where) {
     if (used == v.size() && p > 0 && p < 65536) return static_cast<unsigned>(p);
   } catch (const std::exception&) {
   }
-  throw std::runtime_error(where + ": expected a port number 1..65535, got '" + v + "'");
+  throw BadInput(where + ": expected a port number 1..65535, got '" + v + "'");
 }
 
 std::string read_file(const std::string& path, const std::string& what) {
   std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot read " + what + " '" + path + "'");
+  if (!in) throw IoError("cannot read " + what + " '" + path + "'");
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
@@ -71,19 +73,19 @@ void apply_config_text(DbSettings& s, Role role, const std::string& text, const 
     line = trim(line);
     if (line.empty() || line[0] == '#' || line[0] == ';') continue;
     if (line.front() == '[') {
-      if (line.back() != ']') throw std::runtime_error(where + ": expected '[section]', got '" + line + "'");
+      if (line.back() != ']') throw FileFormatError(where + ": expected '[section]', got '" + line + "'");
       section = trim(line.substr(1, line.size() - 2));
       continue;
     }
     const auto eq = line.find('=');
-    if (eq == std::string::npos) throw std::runtime_error(where + ": expected 'key = value', got '" + line + "'");
+    if (eq == std::string::npos) throw FileFormatError(where + ": expected 'key = value', got '" + line + "'");
     const std::string key = trim(line.substr(0, eq)), value = trim(line.substr(eq + 1));
     if (section == "database") {
       if (key == "host") s.host = value;
       else if (key == "port") s.port = parse_port(value, where);
       else if (key == "socket") s.socket = value;
       else if (key == "name") s.database = value;
-      else throw std::runtime_error(where + ": expected host, port, socket or name in [database], got '" + key + "'");
+      else throw FileFormatError(where + ": expected host, port, socket or name in [database], got '" + key + "'");
     } else if (section == mine) {
       if (key == "user") s.user = value;
       else if (key == "password") s.password = value;

@@ -10,13 +10,14 @@
 
 #include <mysql++/mysql++.h>
 
+#include "common/core/error.h"
 #include "protocol/fleet_states.h"
 
 namespace fleetmap {
 
-class RobotNotFound : public std::runtime_error {
+class RobotNotFound : public NotFound {
  public:
-  explicit RobotNotFound(const std::string& name) : std::runtime_error("no robot named '" + name + "'") {}
+  explicit RobotNotFound(const std::string& name) : NotFound("no robot named '" + name + "'") {}
 };
 
 struct RobotStatus {

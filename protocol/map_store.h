@@ -10,6 +10,7 @@
 #include <mysql++/mysql++.h>
 
 #include "common/map/map.h"
+#include "common/core/error.h"
 
 namespace fleetmap {
 
@@ -25,15 +26,15 @@ struct MapInfo {
   std::optional<double> geo_lat, geo_lon, geo_heading;
 };
 
-class MapNotFound : public std::runtime_error {
+class MapNotFound : public NotFound {
  public:
-  explicit MapNotFound(const std::string& name) : std::runtime_error("no map named '" + name + "'") {}
+  explicit MapNotFound(const std::string& name) : NotFound("no map named '" + name + "'") {}
 };
 
-class MapExists : public std::runtime_error {
+class MapExists : public NotFound {
  public:
   explicit MapExists(const std::string& name)
-      : std::runtime_error("a map named '" + name + "' exists; use --replace to replace it") {}
+      : NotFound("a map named '" + name + "' exists; use --replace to replace it") {}
 };
 
 // Map names: [A-Za-z0-9_.-]{1,64}. Returns an "expected ..., got ..." message when invalid.

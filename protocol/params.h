@@ -12,15 +12,16 @@
 #include <nlohmann/json.hpp>
 
 #include "common/geometry/geometry.h"
+#include "common/core/error.h"
 #include "protocol/ops.h"
 
 namespace fleetmap {
 
 using Json = nlohmann::json;
 
-class ProtocolError : public std::runtime_error {
+class ProtocolError : public BadInput {
  public:
-  ProtocolError(ErrorCode code, const std::string& message) : std::runtime_error(message), code_(code) {}
+  ProtocolError(ErrorCode code, const std::string& message) : BadInput(message), code_(code) {}
   ErrorCode code() const { return code_; }
 
  private:

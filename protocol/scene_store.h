@@ -17,23 +17,24 @@
 
 #include <mysql++/mysql++.h>
 
+#include "common/core/error.h"
 #include "common/io/wkt.h"  // parse_polygon_wkt, polygon_to_wkt: the store's polygon text
 #include "common/scene/scene.h"
 
 namespace fleetmap {
 
 // An object or avoided-area key that is already stored (import without replace, avoid add).
-class SceneKeyExists : public std::runtime_error {
+class SceneKeyExists : public NotFound {
  public:
   SceneKeyExists(const std::string& map, const std::string& what, const std::string& key, const std::string& hint = "")
-      : std::runtime_error("map '" + map + "' already has " + what + " '" + key + "'" + hint) {}
+      : NotFound("map '" + map + "' already has " + what + " '" + key + "'" + hint) {}
 };
 
 // A tag the tags table does not know (import without add_tags).
-class UnknownTag : public std::invalid_argument {
+class UnknownTag : public BadInput {
  public:
   UnknownTag(const std::string& tag, const std::string& object)
-      : std::invalid_argument("object '" + object + "': unknown tag '" + tag +
+      : BadInput("object '" + object + "': unknown tag '" + tag +
                               "'; add it with 'fleetmap tags set' or import with --add-tags") {}
 };
 

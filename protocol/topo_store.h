@@ -15,6 +15,7 @@
 
 #include <mysql++/mysql++.h>
 
+#include "common/core/error.h"
 #include "common/planning/topo_graph.h"
 
 namespace fleetmap {
@@ -27,16 +28,16 @@ struct TopoInfo {
   std::string imported_at;
 };
 
-class TopoGraphNotFound : public std::runtime_error {
+class TopoGraphNotFound : public NotFound {
  public:
   explicit TopoGraphNotFound(const std::string& map)
-      : std::runtime_error("map '" + map + "' has no topological graph; import one with 'fleetmap topo import'") {}
+      : NotFound("map '" + map + "' has no topological graph; import one with 'fleetmap topo import'") {}
 };
 
-class TopoGraphExists : public std::runtime_error {
+class TopoGraphExists : public NotFound {
  public:
   explicit TopoGraphExists(const std::string& map)
-      : std::runtime_error("map '" + map + "' has a topological graph; use --replace to replace it") {}
+      : NotFound("map '" + map + "' has a topological graph; use --replace to replace it") {}
 };
 
 class TopoStore {

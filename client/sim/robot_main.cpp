@@ -5,16 +5,20 @@
 #include <csignal>
 #include <unistd.h>
 
-#include <fstream>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
+#include "app/exit_codes.h"
 #include "app/maps_dir.h"
-#include "client/sim/localization_trials.h"
+#include "app/password_file.h"
+#include "app/run_program.h"
 #include "client/robot_client.h"
+#include "client/sim/localization_trials.h"
 #include "client/sim/sim_robot.h"
+#include "common/core/error.h"
+#include "common/io/amrl_import.h"
 #include "common/io/read_map_file.h"
 #include "common/raycast/grid_ray_caster.h"
 #include "common/io/seed_format.h"
@@ -25,13 +29,13 @@ std::atomic<bool> g_stop{false};
 extern "C" void on_signal(int) { g_stop = true; }
 
 // --trials: the report of bench-localization through the same runner, with the robot's
-// laser and particle count. Returns the exit code.
+// laser and particle count. Returns the exit code; errors are thrown (run_program).
 int run_trials(int trials, std::vector<std::string> maps, const std::string& presets, bool skip_tracking,
                int look_around, const fleetmap::SimRobotOptions& o) {
   namespace loc = fleetmap::localization;
   loc::TrialSettings s;
   s.trials = trials;
-  s.updates = 10;  // the criterion: within 10 updates
+  s.updates = 10;  // localized means: within 10 laser updates (docs/localization.md)
   s.look_around = look_around;
   s.seed = o.seed;
   s.laser = o.laser;
@@ -46,26 +50,15 @@ int run_trials(int trials, std::vector<std::string> maps, const std::string& pre
     at = comma + 1;
   }
   for (const std::string& n : names)
-    if (!loc::preset(n)) {
-      std::cerr << "--presets: expected seed, robust or search, got " << n << "\n";
-      return 64;
-    }
+    if (!loc::preset(n)) throw fleetmap::UsageError("--presets: expected seed, robust or search, got " + n);
   if (maps.empty()) maps = {fleetmap::real_map_path("GDC1.vectormap.txt"), fleetmap::real_map_path("UT_Campus.vectormap.txt")};
-  try {
-    for (const std::string& path : maps) {
-      const fleetmap::Map map = loc::load_map_file(path);
-      std::shared_ptr<const fleetmap::RayCaster> world = std::make_shared<fleetmap::GridRayCaster>(map, s.filter.laser);
-      loc::report_map_header(stdout, path, map, s);
-      for (const std::string& n : names) loc::report_preset(stdout, map, world, s, n, true, !skip_tracking);
-    }
-  } catch (const fleetmap::MapFormatError& e) {
-    std::cerr << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "fleetmap-robot: " << e.what() << "\n";
-    return 1;
+  for (const std::string& path : maps) {
+    const fleetmap::Map map = loc::load_map_file(path);  // MapFormatError: exit 2
+    std::shared_ptr<const fleetmap::RayCaster> world = std::make_shared<fleetmap::GridRayCaster>(map, s.filter.laser);
+    loc::report_map_header(stdout, path, map, s);
+    for (const std::string& n : names) loc::report_preset(stdout, map, world, s, n, true, !skip_tracking);
   }
-  return 0;
+  return fleetmap::exit_code::kOk;
 }
 }  // namespace
 
@@ -123,30 +116,18 @@ int main(int argc, char** argv) {
                  "--trials: scans turning 60 degrees in place before wandering (0: wander from the first)")
       ->capture_default_str();
   app.footer("Exit codes: 0 ok, 1 failure (database, server), 2 bad input, 5 localization failed, 64 usage.");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 64;
-  }
-  if (trials > 0) return run_trials(trials, map_files, presets, skip_tracking, look_around, o);
-  if (start.size() != 3) {
-    std::cerr << "--start X Y THETA is required (or --trials N)\n";
-    return 64;
-  }
-  spdlog::set_level(spdlog::level::from_str(log_level));
-  spdlog::set_pattern("%H:%M:%S.%e %^%-5l%$ [robot] %v");
-  std::signal(SIGTERM, on_signal);
-  std::signal(SIGINT, on_signal);
-  try {
+  return run_program("fleetmap-robot", app, argc, argv, [&]() -> int {
+    if (trials > 0) return run_trials(trials, map_files, presets, skip_tracking, look_around, o);
+    if (start.size() != 3) throw UsageError("--start X Y THETA is required (or --trials N)");
+    spdlog::set_level(spdlog::level::from_str(log_level));
+    spdlog::set_pattern("%H:%M:%S.%e %^%-5l%$ [robot] %v");
+    std::signal(SIGTERM, on_signal);
+    std::signal(SIGINT, on_signal);
     DbSettings s = load_settings(Role::Robot, config);
     if (host) { s.host = *host; s.socket.clear(); }
     if (port) s.port = *port;
     if (user) s.user = *user;
-    if (password_file) {
-      std::ifstream in(*password_file);
-      std::getline(in, s.password);
-    }
+    if (password_file) s.password = read_password_file(*password_file);
     s.socket.clear();  // robots connect over the network, as real ones do
     RobotClient client(s);
     const RobotSession session = client.ready(magic ? magic : getpid());
@@ -164,17 +145,10 @@ int main(int argc, char** argv) {
       spdlog::info("tracking from the operator's initial pose ({:.2f}, {:.2f})", p.x, p.y);
       robot.start_tracking({p.x, p.y, p.theta.value_or(0)}, 0.3, p.theta ? 0.05 : 3.2);
     } else if (!robot.localize(max_updates)) {
-      spdlog::error("global localization failed; set an initial pose (fleetmap pose-ini) and restart");
-      return 5;
+      throw LocalizationFailed("global localization failed; set an initial pose (fleetmap pose-ini) and restart");
     }
     robot.run(g_stop, duration);
     spdlog::info("stopped: {} goal(s) reached", robot.goals_reached());
-    return 0;
-  } catch (const MapFormatError& e) {
-    std::cerr << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "fleetmap-robot: " << e.what() << "\n";
-    return 1;
-  }
+    return exit_code::kOk;
+  });
 }

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "common/core/error.h"
 #include "common/map/map_validation.h"
 #include "common/io/seed_format.h"
 
@@ -95,7 +96,7 @@ Map read_amrl(std::string_view text, const AmrlOptions& opt, AmrlReport* report,
 
 Map read_amrl_file(const std::string& path, const AmrlOptions& opt, AmrlReport* report) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw MapFormatError(path, 0, "expected a readable file, got an error opening it");
+  if (!in) throw IoError(path + ": expected a readable file, got an error opening it");
   std::ostringstream ss;
   ss << in.rdbuf();
   return read_amrl(ss.str(), opt, report, path);

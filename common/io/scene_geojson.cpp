@@ -277,7 +277,7 @@ std::string feature_text(const std::string& props, const std::vector<const Polyg
 }  // namespace
 
 SceneFormatError::SceneFormatError(int feature, std::string field, const std::string& message, std::string_view item)
-    : std::runtime_error((feature < 0 ? std::string("document") : std::string(item) + " " + std::to_string(feature)) +
+    : BadInput((feature < 0 ? std::string("document") : std::string(item) + " " + std::to_string(feature)) +
                          (field.empty() ? "" : " (" + field + ")") + ": " + message),
       feature_(feature),
       field_(std::move(field)) {}

@@ -17,10 +17,11 @@
 #include <vector>
 
 #include "common/scene/scene.h"
+#include "common/core/error.h"
 
 namespace fleetmap {
 
-class SceneFormatError : public std::runtime_error {
+class SceneFormatError : public BadInput {
  public:
   // feature: index in "features", or -1 for the document itself. what():
   //   feature 3 (properties.z): expected 2 ranges, one per polygon, got 1

@@ -15,7 +15,7 @@
 namespace fleetmap {
 
 MapFormatError::MapFormatError(std::string file, size_t line, std::string message)
-    : std::runtime_error(file + ":" + std::to_string(line) + ": " + message),
+    : FileFormatError(file + ":" + std::to_string(line) + ": " + message),
       file_(std::move(file)),
       line_(line),
       message_(std::move(message)) {}
@@ -232,7 +232,7 @@ Map read_seed(std::string_view text, const std::string& file, MapKind kind) {
 
 Map read_seed_file(const std::string& path, MapKind kind) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw MapFormatError(path, 0, "expected a readable file, got an error opening it");
+  if (!in) throw IoError(path + ": expected a readable file, got an error opening it");
   std::ostringstream ss;
   ss << in.rdbuf();
   return read_seed(ss.str(), path, kind);

@@ -14,12 +14,13 @@
 #include <string_view>
 
 #include "common/map/map.h"
+#include "common/core/error.h"
 #include "common/map/map_validation.h"
 
 namespace fleetmap {
 
 // "file:line: expected ..., got ..."
-class MapFormatError : public std::runtime_error {
+class MapFormatError : public FileFormatError {
  public:
   MapFormatError(std::string file, size_t line, std::string message);
   const std::string& file() const { return file_; }

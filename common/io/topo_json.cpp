@@ -213,7 +213,7 @@ TopoFormatError syntax_error(const std::string& file, const nlohmann::json::pars
 }  // namespace
 
 TopoFormatError::TopoFormatError(std::string file, std::string where, std::string message)
-    : std::runtime_error(file + ": " + where + ": " + message),
+    : FileFormatError(file + ": " + where + ": " + message),
       file_(std::move(file)),
       where_(std::move(where)),
       message_(std::move(message)) {}
@@ -257,7 +257,7 @@ TopoGraph read_topo_json(std::string_view text, const std::string& file) {
 
 TopoGraph read_topo_json_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw TopoFormatError(path, "(file)", "expected a readable file");
+  if (!in) throw IoError(path + ": (file): expected a readable file");
   std::ostringstream ss;
   ss << in.rdbuf();
   return read_topo_json(ss.str(), path);

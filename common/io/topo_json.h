@@ -28,11 +28,12 @@
 #include <string_view>
 
 #include "common/planning/topo_graph.h"
+#include "common/core/error.h"
 
 namespace fleetmap {
 
 // "file: where: expected ..., got ...", where is "edges[3].s1_id" or "line 4, column 9".
-class TopoFormatError : public std::runtime_error {
+class TopoFormatError : public FileFormatError {
  public:
   TopoFormatError(std::string file, std::string where, std::string message);
   const std::string& file() const { return file_; }

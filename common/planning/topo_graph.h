@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "common/geometry/geometry.h"
+#include "common/core/error.h"
 #include "common/planning/path.h"
 
 namespace fleetmap {
@@ -61,14 +62,14 @@ struct TopoEdge {
 };
 
 // A graph that cannot be built: duplicate node id, edge to a missing node, NaN position.
-class TopoGraphError : public std::invalid_argument {
+class TopoGraphError : public BadInput {
  public:
-  using std::invalid_argument::invalid_argument;
+  using BadInput::BadInput;
 };
 
-class TopoNodeNotFound : public std::out_of_range {
+class TopoNodeNotFound : public NotFound {
  public:
-  explicit TopoNodeNotFound(int id) : std::out_of_range("no node with id " + std::to_string(id)), id_(id) {}
+  explicit TopoNodeNotFound(int id) : NotFound("no node with id " + std::to_string(id)), id_(id) {}
   int id() const { return id_; }
 
  private:

@@ -15,6 +15,7 @@
 #include "protocol/robot_whereabouts.h"
 #include "protocol/scene_store.h"
 #include "app/exit_codes.h"
+#include "common/core/error.h"
 #include "server/core/planner_cache.h"
 #include "server/core/server_config.h"
 
@@ -60,7 +61,7 @@ int assign_goal_near(CliContext& ctx, const std::string& robot, const GoalNearAr
   mysqlpp::Connection& c = ctx.connection();
   const RobotWhereabouts w = robot_whereabouts(c, robot);  // RobotNotFound: exit 4
   if (!args.map.empty() && args.map != w.map)
-    throw std::invalid_argument("--map: robot '" + robot + "' works on map '" + w.map + "', not '" + args.map +
+    throw BadInput("--map: robot '" + robot + "' works on map '" + w.map + "', not '" + args.map +
                                 "'; its goals are in its own map's frame");
   if (!w.map_id) return fail(exit_code::kNotFound, "robot '" + robot + "' has no map");
   const std::optional<Point> from = w.known_position();

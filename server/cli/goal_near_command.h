@@ -1,5 +1,6 @@
 #pragma once
-// `fleetmap goal ROBOT --near TAG [--map M] [--margin D]` (issue 8): goals by meaning.
+// `fleetmap goal ROBOT --near TAG [--map M] [--margin D]`: goals by meaning
+// (docs/semantic-layer.md).
 //
 //   1. the robot's position: its last reported pose, else its initial pose (pose-ini);
 //   2. the object with that tag nearest to it (SceneStore::near: live objects, by the

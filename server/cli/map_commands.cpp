@@ -18,6 +18,8 @@
 #include "protocol/fleet_store.h"
 #include "protocol/map_store.h"
 #include "app/exit_codes.h"
+#include "common/core/error.h"
+#include "server/cli/command.h"
 #include "server/cli/map_source.h"
 
 namespace fleetmap {
@@ -82,177 +84,218 @@ ImportProgress progress_printer() {
   };
 }
 
+// map check FILE: read and validate, no database.
+struct MapCheckArgs {
+  std::string file;
+  ReadOptions read;
+};
+
+int run_map_check(const MapCheckArgs& a, CliContext&) {
+  Map m = read_map_file(a.file, a.read);
+  std::cout << a.file << ": ok: " << describe_map(m) << "\n";
+  return exit_code::kOk;
+}
+
+void add_map_check(CLI::App& map, CliContext& ctx) {
+  auto a = std::make_shared<MapCheckArgs>();
+  auto* cmd = map.add_subcommand("check", "validate a map file without touching the database");
+  cmd->add_option("FILE", a->file, "map file")->required();
+  add_read_options(cmd, a->read);
+  run_with(*cmd, a, ctx, run_map_check);
+}
+
+// map import FILE --name NAME: one transaction.
+struct MapImportArgs {
+  std::string file, name;
+  bool replace = false;
+  ReadOptions read;
+};
+
+int run_map_import(const MapImportArgs& a, CliContext& ctx) {
+  if (auto e = check_map_name(a.name)) throw BadInput(*e);
+  Map m = read_map_file(a.file, a.read);
+  const auto t0 = std::chrono::steady_clock::now();
+  MapStore store(ctx.connection());
+  store.import(m, a.name, a.file, a.replace, progress_printer());
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("imported '%s': %zu obstacles, %zu segments in %.2f s (%.0f segments/s)\n", a.name.c_str(),
+              m.obstacles.size(), m.segment_count(), s, m.segment_count() / std::max(s, 1e-9));
+  return exit_code::kOk;
+}
+
+void add_map_import(CLI::App& map, CliContext& ctx) {
+  auto a = std::make_shared<MapImportArgs>();
+  auto* cmd = map.add_subcommand("import", "import a map file (one transaction: all or nothing)");
+  cmd->add_option("FILE", a->file, "map file")->required();
+  cmd->add_option("--name", a->name, "map name, [A-Za-z0-9_.-]{1,64}")->required();
+  cmd->add_flag("--replace", a->replace, "replace a map of the same name");
+  add_read_options(cmd, a->read);
+  run_with(*cmd, a, ctx, run_map_import);
+}
+
+// map export NAME: seed text, GeoJSON or SVG (with the robots' trajectories).
+struct MapExportArgs {
+  std::string name, format = "seed", out, since;
+  bool trajectories = false;
+};
+
+int run_map_export(const MapExportArgs& a, CliContext& ctx) {
+  MapStore store(ctx.connection());
+  const Map m = store.load(a.name);
+  std::string text;
+  if (a.format == "seed") text = write_seed(m);
+  else if (a.format == "geojson") text = write_geojson(m, a.name);
+  else {
+    SvgOptions so;
+    so.title = a.name;
+    if (a.trajectories) {
+      FleetStore fleet(ctx.connection());
+      for (const RobotStatus& r : fleet.status()) {
+        if (r.map != a.name) continue;
+        SvgTrack t;
+        t.label = r.name;
+        std::optional<std::string> from;
+        if (!a.since.empty()) from = a.since;
+        for (const TrajectoryPoint& p : fleet.trajectory(r.name, from)) t.points.push_back({p.x, p.y});
+        if (!t.points.empty()) so.tracks.push_back(std::move(t));
+      }
+    }
+    text = write_svg(m, so);
+  }
+  write_output(text, a.out);
+  return exit_code::kOk;
+}
+
+void add_map_export(CLI::App& map, CliContext& ctx) {
+  auto a = std::make_shared<MapExportArgs>();
+  auto* cmd = map.add_subcommand("export", "write a stored map as seed text, GeoJSON or SVG");
+  cmd->add_flag("--trajectories", a->trajectories, "svg: draw the trajectories of the map's robots");
+  cmd->add_option("--since", a->since, "with --trajectories: only poses since this timestamp or age (10m, 2h)")
+      ->type_name("TIME|AGE");
+  cmd->add_option("NAME", a->name, "map name")->required();
+  cmd->add_option("--format", a->format, "seed, geojson or svg")
+      ->check(CLI::IsMember({"seed", "geojson", "svg"}))
+      ->capture_default_str();
+  cmd->add_option("-o,--output", a->out, "output file (default: standard output)");
+  run_with(*cmd, a, ctx, run_map_export);
+}
+
+// map list
+struct MapListArgs {};
+
+int run_map_list(const MapListArgs&, CliContext& ctx) {
+  MapStore store(ctx.connection());
+  std::printf("%-24s %9s %9s  %-44s %s\n", "NAME", "OBSTACLES", "SEGMENTS", "BORDER (mx1,my1)-(mx4,my4)", "IMPORTED");
+  for (const MapInfo& i : store.list()) {
+    char border[96];
+    std::snprintf(border, sizeof border, "(%.2f,%.2f)-(%.2f,%.2f)", i.border.mx1, i.border.my1, i.border.mx4,
+                  i.border.my4);
+    std::printf("%-24s %9zu %9zu  %-44s %s\n", i.name.c_str(), i.obstacles, i.segments, border, i.imported_at.c_str());
+  }
+  return exit_code::kOk;
+}
+
+void add_map_list(CLI::App& map, CliContext& ctx) {
+  auto* cmd = map.add_subcommand("list", "list stored maps");
+  run_with(*cmd, std::make_shared<MapListArgs>(), ctx, run_map_list);
+}
+
+// map delete NAME
+struct MapDeleteArgs {
+  std::string name;
+};
+
+int run_map_delete(const MapDeleteArgs& a, CliContext& ctx) {
+  MapStore store(ctx.connection());
+  if (!store.remove(a.name)) throw MapNotFound(a.name);
+  std::printf("deleted '%s'\n", a.name.c_str());
+  return exit_code::kOk;
+}
+
+void add_map_delete(CLI::App& map, CliContext& ctx) {
+  auto a = std::make_shared<MapDeleteArgs>();
+  auto* cmd = map.add_subcommand("delete", "delete a stored map");
+  cmd->add_option("NAME", a->name, "map name")->required();
+  run_with(*cmd, a, ctx, run_map_delete);
+}
+
+// map georef NAME LAT LON [--heading H] | --clear
+struct MapGeorefArgs {
+  std::string name;
+  std::optional<double> lat, lon;
+  double heading = 0;
+  bool clear = false;
+};
+
+int run_map_georef(const MapGeorefArgs& a, CliContext& ctx) {
+  MapStore store(ctx.connection());
+  if (a.clear) {
+    store.set_georef(a.name, std::nullopt, std::nullopt, 0);
+  } else {
+    if (!a.lat || !a.lon) throw BadInput("expected LAT and LON, or --clear");
+    if (!std::isfinite(a.heading)) throw BadInput("expected a finite --heading");
+    store.set_georef(a.name, *a.lat, *a.lon, a.heading);
+  }
+  std::printf("map '%s' %s\n", a.name.c_str(), a.clear ? "is no longer georeferenced" : "georeferenced");
+  return exit_code::kOk;
+}
+
+void add_map_georef(CLI::App& map, CliContext& ctx) {
+  auto a = std::make_shared<MapGeorefArgs>();
+  auto* cmd = map.add_subcommand("georef", "georeference a map: SendGPS fixes then get map coordinates");
+  cmd->add_option("NAME", a->name, "map name")->required();
+  cmd->add_option("LAT", a->lat, "latitude of the map origin (degrees, WGS84)")->check(CLI::Range(-90.0, 90.0));
+  cmd->add_option("LON", a->lon, "longitude of the map origin (degrees)")->check(CLI::Range(-180.0, 180.0));
+  cmd->add_option("--heading", a->heading, "direction of the map x axis, radians counter-clockwise from east")
+      ->capture_default_str();
+  cmd->add_flag("--clear", a->clear, "remove the georeference");
+  run_with(*cmd, a, ctx, run_map_georef);
+}
+
+// window NAME X Y W H: the partial map, seed format.
+struct WindowArgs {
+  std::string name, out;
+  double x = 0, y = 0, w = 0, h = 0;
+};
+
+int run_window(const WindowArgs& a, CliContext& ctx) {
+  for (double d : {a.x, a.y, a.w, a.h})
+    if (!std::isfinite(d)) throw BadInput("expected finite numbers for X Y W H");
+  if (!(a.w > 0 && a.h > 0)) throw BadInput("expected W > 0 and H > 0");
+  MapStore store(ctx.connection());
+  const MapInfo info = store.info(a.name);
+  const Rect r = window_rect(info.border, {a.x, a.y}, a.w, a.h);
+  if (r.empty()) throw BadInput("expected a window that overlaps the map's border, got one outside it");
+  const Map part = store.window(a.name, r);
+  write_output(write_seed(part), a.out);
+  return exit_code::kOk;
+}
+
+void add_window(CLI::App& app, CliContext& ctx) {
+  auto a = std::make_shared<WindowArgs>();
+  auto* cmd = app.add_subcommand(
+      "window", "print the partial map of the W (along x) x H (along y) window centred on (X, Y), seed format");
+  cmd->add_option("NAME", a->name, "map name")->required();
+  cmd->add_option("X", a->x, "window centre x (m)")->required();
+  cmd->add_option("Y", a->y, "window centre y (m)")->required();
+  cmd->add_option("W", a->w, "window width along x (m), > 0")->required();
+  cmd->add_option("H", a->h, "window height along y (m), > 0")->required();
+  cmd->add_option("-o,--output", a->out, "output file (default: standard output)");
+  run_with(*cmd, a, ctx, run_window);
+}
+
 }  // namespace
 
-void add_map_commands(CLI::App& app, CliContext& ctx, int* exit_code) {
+void add_map_commands(CLI::App& app, CliContext& ctx) {
   auto* map = app.add_subcommand("map", "import, export, list, check and delete maps");
   map->require_subcommand(1);
-
-  // map check
-  {
-    auto o = std::make_shared<ReadOptions>();
-    auto file = std::make_shared<std::string>();
-    auto* cmd = map->add_subcommand("check", "validate a map file without touching the database");
-    cmd->add_option("FILE", *file, "map file")->required();
-    add_read_options(cmd, *o);
-    cmd->callback([=] {
-      Map m = read_map_file(*file, *o);
-      std::cout << *file << ": ok: " << describe_map(m) << "\n";
-      *exit_code = exit_code::kOk;
-    });
-  }
-
-  // map import
-  {
-    auto o = std::make_shared<ReadOptions>();
-    auto file = std::make_shared<std::string>();
-    auto name = std::make_shared<std::string>();
-    auto replace = std::make_shared<bool>(false);
-    auto* cmd = map->add_subcommand("import", "import a map file (one transaction: all or nothing)");
-    cmd->add_option("FILE", *file, "map file")->required();
-    cmd->add_option("--name", *name, "map name, [A-Za-z0-9_.-]{1,64}")->required();
-    cmd->add_flag("--replace", *replace, "replace a map of the same name");
-    add_read_options(cmd, *o);
-    cmd->callback([=, &ctx] {
-      if (auto e = check_map_name(*name)) throw std::invalid_argument(*e);
-      Map m = read_map_file(*file, *o);
-      const auto t0 = std::chrono::steady_clock::now();
-      MapStore store(ctx.connection());
-      store.import(m, *name, *file, *replace, progress_printer());
-      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      std::printf("imported '%s': %zu obstacles, %zu segments in %.2f s (%.0f segments/s)\n", name->c_str(),
-                  m.obstacles.size(), m.segment_count(), s, m.segment_count() / std::max(s, 1e-9));
-      *exit_code = exit_code::kOk;
-    });
-  }
-
-  // map export
-  {
-    auto name = std::make_shared<std::string>();
-    auto format = std::make_shared<std::string>("seed");
-    auto out = std::make_shared<std::string>();
-    auto tracks = std::make_shared<bool>(false);
-    auto* cmd = map->add_subcommand("export", "write a stored map as seed text, GeoJSON or SVG");
-    cmd->add_flag("--trajectories", *tracks, "svg: draw the trajectories of the map's robots");
-    auto since = std::make_shared<std::string>();
-    cmd->add_option("--since", *since, "with --trajectories: only poses since this timestamp or age (10m, 2h)");
-    cmd->add_option("NAME", *name, "map name")->required();
-    cmd->add_option("--format", *format, "seed, geojson or svg")
-        ->check(CLI::IsMember({"seed", "geojson", "svg"}))
-        ->capture_default_str();
-    cmd->add_option("-o,--output", *out, "output file (default: standard output)");
-    cmd->callback([=, &ctx] {
-      MapStore store(ctx.connection());
-      const Map m = store.load(*name);
-      std::string text;
-      if (*format == "seed") text = write_seed(m);
-      else if (*format == "geojson") text = write_geojson(m, *name);
-      else {
-        SvgOptions so;
-        so.title = *name;
-        if (*tracks) {
-          FleetStore fleet(ctx.connection());
-          for (const RobotStatus& r : fleet.status()) {
-            if (r.map != *name) continue;
-            SvgTrack t;
-            t.label = r.name;
-            std::optional<std::string> from;
-            if (!since->empty()) from = *since;
-            for (const TrajectoryPoint& p : fleet.trajectory(r.name, from)) t.points.push_back({p.x, p.y});
-            if (!t.points.empty()) so.tracks.push_back(std::move(t));
-          }
-        }
-        text = write_svg(m, so);
-      }
-      write_output(text, *out);
-      *exit_code = exit_code::kOk;
-    });
-  }
-
-  // map list
-  {
-    auto* cmd = map->add_subcommand("list", "list stored maps");
-    cmd->callback([=, &ctx] {
-      MapStore store(ctx.connection());
-      std::printf("%-24s %9s %9s  %-44s %s\n", "NAME", "OBSTACLES", "SEGMENTS", "BORDER (mx1,my1)-(mx4,my4)", "IMPORTED");
-      for (const MapInfo& i : store.list()) {
-        char border[96];
-        std::snprintf(border, sizeof border, "(%.2f,%.2f)-(%.2f,%.2f)", i.border.mx1, i.border.my1, i.border.mx4,
-                      i.border.my4);
-        std::printf("%-24s %9zu %9zu  %-44s %s\n", i.name.c_str(), i.obstacles, i.segments, border,
-                    i.imported_at.c_str());
-      }
-      *exit_code = exit_code::kOk;
-    });
-  }
-
-  // map delete
-  {
-    auto name = std::make_shared<std::string>();
-    auto* cmd = map->add_subcommand("delete", "delete a stored map");
-    cmd->add_option("NAME", *name, "map name")->required();
-    cmd->callback([=, &ctx] {
-      MapStore store(ctx.connection());
-      if (!store.remove(*name)) throw MapNotFound(*name);
-      std::printf("deleted '%s'\n", name->c_str());
-      *exit_code = exit_code::kOk;
-    });
-  }
-
-  // map georef
-  {
-    auto name = std::make_shared<std::string>();
-    auto lat = std::make_shared<double>(), lon = std::make_shared<double>();
-    auto heading = std::make_shared<double>(0);
-    auto clear = std::make_shared<bool>(false);
-    auto* cmd = map->add_subcommand("georef", "georeference a map: SendGPS fixes then get map coordinates");
-    cmd->add_option("NAME", *name, "map name")->required();
-    cmd->add_option("LAT", *lat, "latitude of the map origin (degrees, WGS84)")->check(CLI::Range(-90.0, 90.0));
-    cmd->add_option("LON", *lon, "longitude of the map origin (degrees)")->check(CLI::Range(-180.0, 180.0));
-    cmd->add_option("--heading", *heading, "direction of the map x axis, radians counter-clockwise from east")
-        ->capture_default_str();
-    cmd->add_flag("--clear", *clear, "remove the georeference");
-    cmd->callback([=, &ctx] {
-      MapStore store(ctx.connection());
-      if (*clear) {
-        store.set_georef(*name, std::nullopt, std::nullopt, 0);
-      } else {
-        if (cmd->count("LAT") == 0 || cmd->count("LON") == 0) throw std::invalid_argument("expected LAT and LON, or --clear");
-        if (!std::isfinite(*heading)) throw std::invalid_argument("expected a finite --heading");
-        store.set_georef(*name, *lat, *lon, *heading);
-      }
-      std::printf("map '%s' %s\n", name->c_str(), *clear ? "is no longer georeferenced" : "georeferenced");
-      *exit_code = exit_code::kOk;
-    });
-  }
-
-  // window
-  {
-    auto name = std::make_shared<std::string>();
-    auto v = std::make_shared<std::array<double, 4>>();
-    auto out = std::make_shared<std::string>();
-    auto* cmd = app.add_subcommand(
-        "window", "print the partial map of the W (along x) x H (along y) window centred on (X, Y), seed format");
-    cmd->add_option("NAME", *name, "map name")->required();
-    cmd->add_option("X", (*v)[0], "window centre x (m)")->required();
-    cmd->add_option("Y", (*v)[1], "window centre y (m)")->required();
-    cmd->add_option("W", (*v)[2], "window width along x (m), > 0")->required();
-    cmd->add_option("H", (*v)[3], "window height along y (m), > 0")->required();
-    cmd->add_option("-o,--output", *out, "output file (default: standard output)");
-    cmd->callback([=, &ctx] {
-      const auto [x, y, w, h] = *v;
-      for (double d : *v)
-        if (!std::isfinite(d)) throw std::invalid_argument("expected finite numbers for X Y W H");
-      if (!(w > 0 && h > 0)) throw std::invalid_argument("expected W > 0 and H > 0");
-      MapStore store(ctx.connection());
-      const MapInfo info = store.info(*name);
-      const Rect r = window_rect(info.border, {x, y}, w, h);
-      if (r.empty()) throw std::invalid_argument("expected a window that overlaps the map's border, got one outside it");
-      const Map part = store.window(*name, r);
-      write_output(write_seed(part), *out);
-      *exit_code = exit_code::kOk;
-    });
-  }
+  add_map_check(*map, ctx);
+  add_map_import(*map, ctx);
+  add_map_export(*map, ctx);
+  add_map_list(*map, ctx);
+  add_map_delete(*map, ctx);
+  add_map_georef(*map, ctx);
+  add_window(app, ctx);
 }
 
 }  // namespace fleetmap

@@ -1,12 +1,12 @@
 #pragma once
-// Operator commands on maps: map import|export|list|check|delete, and window.
+// Operator commands on maps: map check|import|export|list|delete|georef, and window.
 #include <CLI/CLI.hpp>
 
 #include "app/cli_context.h"
 
 namespace fleetmap {
 
-// Adds the subcommands to app; each sets *exit_code when it runs.
-void add_map_commands(CLI::App& app, CliContext& ctx, int* exit_code);
+// Adds the "map" subcommand (with its subcommands) and "window" to app.
+void add_map_commands(CLI::App& app, CliContext& ctx);
 
 }  // namespace fleetmap

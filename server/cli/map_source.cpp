@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "common/core/error.h"
 #include "common/io/read_map_file.h"
 #include "common/io/scene_geojson.h"
 #include "common/slicing/scene_laser.h"
@@ -30,20 +31,20 @@ void add_object_source_options(CLI::App& cmd, ObjectSource& source) {
 Scene load_scene_source(const std::string& name, const std::string& file, const ObjectSource& source,
                         CliContext& ctx) {
   if (!source.objects_file.empty() && source.no_objects)
-    throw std::invalid_argument("expected --objects F or --no-objects, not both");
+    throw BadInput("expected --objects F or --no-objects, not both");
   if (!source.objects_file.empty() && file.empty())
-    throw std::invalid_argument("expected --objects only with --file: a stored map's objects are in the database");
+    throw BadInput("expected --objects only with --file: a stored map's objects are in the database");
   if (source.no_objects) return {};
   if (!file.empty()) {
     if (source.objects_file.empty()) return {};
     std::ifstream in(source.objects_file, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read '" + source.objects_file + "'");
+    if (!in) throw IoError("cannot read '" + source.objects_file + "'");
     std::ostringstream text;
     text << in.rdbuf();
     try {
       return read_scene_geojson(text.str());
     } catch (const SceneFormatError& e) {
-      throw std::invalid_argument(source.objects_file + ": " + e.what());
+      throw FileFormatError(source.objects_file + ": " + e.what());
     }
   }
   return SceneStore(ctx.connection()).load(name);
@@ -65,7 +66,7 @@ void write_output(const std::string& text, const std::string& file) {
   }
   std::ofstream out(file, std::ios::binary);
   out << text;
-  if (!out) throw std::runtime_error("cannot write '" + file + "'");
+  if (!out) throw IoError("cannot write '" + file + "'");
 }
 
 }  // namespace fleetmap

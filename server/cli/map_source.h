@@ -16,7 +16,7 @@ bool is_amrl_file(const std::string& file);
 // MapFormatError.
 Map load_map_source(const std::string& name, const std::string& file, CliContext& ctx);
 
-// Where the objects of a command's map come from (issue 8): a stored map's scene
+// Where the objects of a command's map come from: a stored map's scene
 // (SceneStore::load), or with --file an optional --objects F.geojson; --no-objects: none.
 struct ObjectSource {
   std::string objects_file;  // --objects (only with --file)
@@ -27,7 +27,7 @@ struct ObjectSource {
 void add_object_source_options(CLI::App& cmd, ObjectSource& source);
 
 // The scene to add to the map (empty with --no-objects, or a file without --objects).
-// Throws std::invalid_argument for --objects with a stored map or with --no-objects,
+// Throws BadInput for --objects with a stored map or with --no-objects,
 // SceneFormatError (a malformed file, named), MapNotFound.
 Scene load_scene_source(const std::string& name, const std::string& file, const ObjectSource& source,
                         CliContext& ctx);
@@ -38,7 +38,8 @@ Scene load_scene_source(const std::string& name, const std::string& file, const 
 Map load_map_at_height(const std::string& name, const std::string& file, const ObjectSource& source,
                        double laser_height, CliContext& ctx, size_t* objects = nullptr);
 
-// text to file, or to standard output when file is empty or "-"; throws on a write error.
+// text to file, or to standard output when file is empty or "-"; throws IoError on a
+// write error.
 void write_output(const std::string& text, const std::string& file);
 
 }  // namespace fleetmap

@@ -14,6 +14,8 @@
 #include "protocol/map_store.h"
 #include "protocol/scene_store.h"
 #include "app/exit_codes.h"
+#include "common/core/error.h"
+#include "server/cli/command.h"
 #include "server/cli/map_source.h"
 
 namespace fleetmap {
@@ -47,19 +49,48 @@ void write_pair(const OccupancyGrid& grid, const std::string& base, bool keepout
   write_output(keepout ? keepout_yaml(grid, file_name(pgm)) : write_nav2_yaml(grid, file_name(pgm)), yaml);
 }
 
+// map nav2 NAME (--robot R | --laser-height H) -o PREFIX
+struct MapNav2Args {
+  std::string name, robot, out;
+  std::optional<double> height;
+  double resolution = 0.05;
+};
+
+int run_map_nav2(const MapNav2Args& a, CliContext& ctx) {
+  if (a.robot.empty() == !a.height) throw BadInput("expected --robot R or --laser-height H (one of them)");
+  const double hL = a.height ? *a.height : robot_laser_height(ctx.connection(), a.robot);
+  const Map map = MapStore(ctx.connection()).load(a.name);
+  const Scene scene = SceneStore(ctx.connection()).load(a.name);
+  // The grid: what stops the laser at hL, walls and objects (as `map slice --format pgm`).
+  const Map seen = with_objects_at_height(map, scene, hL);
+  const OccupancyGrid grid = rasterize_map(slice_at_height(seen, hL), a.resolution);
+  // The mask on the same cells (KeepoutFilter reads it in the map's frame, so origin,
+  // resolution and size must match the grid's): every avoided area filled, whatever
+  // the laser sees of it; a keep-out zone is no wall (docs/semantic-layer.md).
+  OccupancyGrid mask = grid;
+  std::fill(mask.cells.begin(), mask.cells.end(), OccupancyGrid::kFree);
+  for (const AvoidedArea& area : scene.avoided) fill_polygon(mask, area.area, OccupancyGrid::kOccupied);
+  write_pair(grid, a.out, false);
+  write_pair(mask, a.out + "_keepout", true);
+  size_t keepout_cells = 0;
+  for (uint8_t c : mask.cells) keepout_cells += c == OccupancyGrid::kOccupied;
+  const std::string robot = a.robot.empty() ? "" : " (robot " + a.robot + ")";
+  std::fprintf(stderr, "nav2 files of '%s' at hL %g m%s: %d x %d cells of %g m, %zu avoided areas (%zu cells): "
+               "%s.pgm/.yaml, %s_keepout.pgm/.yaml\n",
+               a.name.c_str(), hL, robot.c_str(), grid.width, grid.height, a.resolution, scene.avoided.size(),
+               keepout_cells, a.out.c_str(), a.out.c_str());
+  return exit_code::kOk;
+}
+
 }  // namespace
 
-void add_nav2_command(CLI::App& app, CliContext& ctx, int* exit_code) {
-  struct Args {
-    std::string name, robot, out;
-    std::optional<double> height;
-    double resolution = 0.05;
-  };
-  auto a = std::make_shared<Args>();
+void add_nav2_command(CLI::App& app, CliContext& ctx) {
+  auto a = std::make_shared<MapNav2Args>();
+  // seed 004's per-robot maps, as Nav2 reads them.
   auto* cmd = app.get_subcommand("map")->add_subcommand(
       "nav2",
-      "Nav2 files for a robot profile (issue 8, seed 004): PREFIX.pgm/.yaml, map_server's occupancy grid at the "
-      "laser height with the objects seen there, and PREFIX_keepout.pgm/.yaml, the KeepoutFilter mask of the "
+      "Nav2 files for a robot profile: PREFIX.pgm/.yaml, map_server's occupancy grid at "
+      "the laser height with the objects seen there, and PREFIX_keepout.pgm/.yaml, the KeepoutFilter mask of the "
       "avoided areas (black = keep out; costmap_filter_info_server type 0, base 0, multiplier 1)");
   cmd->add_option("NAME", a->name, "stored map name")->required();
   auto* robot = cmd->add_option("--robot", a->robot, "the robot whose profile gives the laser height "
@@ -70,30 +101,7 @@ void add_nav2_command(CLI::App& app, CliContext& ctx, int* exit_code) {
   cmd->add_option("-o,--output", a->out, "PREFIX of PREFIX.pgm, PREFIX.yaml, PREFIX_keepout.pgm, PREFIX_keepout.yaml")
       ->required();
   cmd->add_option("--resolution", a->resolution, "metres per cell")->capture_default_str()->check(CLI::PositiveNumber);
-  cmd->callback([a, &ctx, exit_code] {
-    if (a->robot.empty() == !a->height) throw std::invalid_argument("expected --robot R or --laser-height H (one of them)");
-    const double hL = a->height ? *a->height : robot_laser_height(ctx.connection(), a->robot);
-    const Map map = MapStore(ctx.connection()).load(a->name);
-    const Scene scene = SceneStore(ctx.connection()).load(a->name);
-    // The grid: what stops the laser at hL, walls and objects (as `map slice --format pgm`).
-    const Map seen = with_objects_at_height(map, scene, hL);
-    const OccupancyGrid grid = rasterize_map(slice_at_height(seen, hL), a->resolution);
-    // The mask on the same cells (KeepoutFilter reads it in the map's frame, so origin,
-    // resolution and size must match the grid's): every avoided area filled, whatever
-    // the laser sees of it; a keep-out zone is no wall (docs/semantic-layer.md).
-    OccupancyGrid mask = grid;
-    std::fill(mask.cells.begin(), mask.cells.end(), OccupancyGrid::kFree);
-    for (const AvoidedArea& area : scene.avoided) fill_polygon(mask, area.area, OccupancyGrid::kOccupied);
-    write_pair(grid, a->out, false);
-    write_pair(mask, a->out + "_keepout", true);
-    size_t keepout_cells = 0;
-    for (uint8_t c : mask.cells) keepout_cells += c == OccupancyGrid::kOccupied;
-    std::fprintf(stderr, "nav2 files of '%s' at hL %g m%s: %d x %d cells of %g m, %zu avoided areas (%zu cells): "
-                 "%s.pgm/.yaml, %s_keepout.pgm/.yaml\n",
-                 a->name.c_str(), hL, a->robot.empty() ? "" : (" (robot " + a->robot + ")").c_str(), grid.width,
-                 grid.height, a->resolution, scene.avoided.size(), keepout_cells, a->out.c_str(), a->out.c_str());
-    *exit_code = exit_code::kOk;
-  });
+  run_with(*cmd, a, ctx, run_map_nav2);
 }
 
 }  // namespace fleetmap

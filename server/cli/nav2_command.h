@@ -1,6 +1,6 @@
 #pragma once
-// fleetmap map nav2: what a robot needs to run Nav2 on a stored map (issue 8, seed 004's
-// per-robot maps), for its laser height:
+// fleetmap map nav2: what a robot needs to run Nav2 on a stored map (seed 004's per-robot
+// maps, docs/semantic-layer.md), for its laser height:
 //
 //   PREFIX.pgm + PREFIX.yaml                  map_server's occupancy grid: the slice at hL
 //                                             with the objects seen at hL (docs/map-format.md)
@@ -20,7 +20,7 @@ namespace fleetmap {
 
 inline constexpr double kDefaultLaserHeight = 0.3;
 
-// Adds `nav2` to the existing `map` subcommand of app; it sets *exit_code when it runs.
-void add_nav2_command(CLI::App& app, CliContext& ctx, int* exit_code);
+// Adds `nav2` to the existing `map` subcommand of app.
+void add_nav2_command(CLI::App& app, CliContext& ctx);
 
 }  // namespace fleetmap

@@ -1,5 +1,5 @@
 #pragma once
-// Operator commands on the semantic layer (issue 8, protocol/scene_store.h):
+// Operator commands on the semantic layer (docs/semantic-layer.md, protocol/scene_store.h):
 //   objects import MAP FILE [--replace] [--add-tags]   GeoJSON scene into a stored map
 //   objects export MAP [-o FILE]                        the map's imported scene as GeoJSON
 //   objects list MAP [--tag T] [--within X Y R]         live objects (imported and observed)
@@ -14,7 +14,7 @@
 
 namespace fleetmap {
 
-// Adds the "objects", "tags" and "avoid" subcommands to app; each sets *exit_code when it runs.
-void add_object_commands(CLI::App& app, CliContext& ctx, int* exit_code);
+// Adds the "objects", "tags" and "avoid" subcommands to app.
+void add_object_commands(CLI::App& app, CliContext& ctx);
 
 }  // namespace fleetmap

@@ -17,6 +17,8 @@
 #include "common/io/seed_format.h"
 #include "protocol/map_store.h"
 #include "app/exit_codes.h"
+#include "common/core/error.h"
+#include "server/cli/command.h"
 
 namespace fleetmap {
 namespace {
@@ -26,14 +28,14 @@ struct PlanArgs {
   std::string file, svg;
   PlannerOptions planner;
   double body_height = 1.0;  // the server's default body_height_m
-  ObjectSource objects;      // the stored map's scene, or --objects F with --file (issue 8)
+  ObjectSource objects;      // the stored map's scene, or --objects F with --file
 };
 
 double parse_coordinate(const std::string& text, const char* name) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || *end != '\0' || !std::isfinite(v))
-    throw std::invalid_argument(std::string("expected a finite number for ") + name + ", got '" + text + "'");
+    throw BadInput(std::string("expected a finite number for ") + name + ", got '" + text + "'");
   return v;
 }
 
@@ -45,7 +47,7 @@ Map load_map(const PlanArgs& a, CliContext& ctx, std::string* name) {
 // Why an object blocks: it starts below the body's top (see --body-height).
 std::string body_note(const std::string& name, const PlanArgs& a) {
   if (name.rfind("object:", 0) != 0) return "";
-  char b[64];
+  char b[96];
   std::snprintf(b, sizeof b, ", which a body %g m tall cannot pass (see --body-height)", a.body_height);
   return b;
 }
@@ -84,7 +86,7 @@ void write_svg_file(const Map& m, const std::string& title, const Path& path, co
   so.tracks.push_back({"planned path", "#d62728", path});
   std::ofstream out(file, std::ios::binary);
   out << write_svg(m, so);
-  if (!out) throw std::runtime_error("cannot write '" + file + "'");
+  if (!out) throw IoError("cannot write '" + file + "'");
 }
 
 int run_plan(const PlanArgs& a, CliContext& ctx) {
@@ -130,13 +132,13 @@ int run_plan(const PlanArgs& a, CliContext& ctx) {
   return exit_code::kOk;
 }
 
-}  // namespace
-
-void add_plan_command(CLI::App& app, CliContext& ctx, int* exit_code) {
+void add_plan(CLI::App& app, CliContext& ctx) {
   auto a = std::make_shared<PlanArgs>();
   a->planner.rrt.max_time = 5;
-  auto* cmd = app.add_subcommand("plan", "plan a path for a disc robot: RRT-Connect, then smoothing (SPEC 7)");
+  // SPEC 7: the planner GetPath uses, on a stored map or a file.
+  auto* cmd = app.add_subcommand("plan", "plan a path for a disc robot: RRT-Connect, then smoothing");
   cmd->add_option("ARGS", a->positional, "MAP X1 Y1 X2 Y2: stored map name, start and goal (m); no MAP with --file")
+      ->type_name("[MAP] FLOAT")
       ->expected(4, 5)
       ->required();
   cmd->add_option("--file", a->file, "plan on a map file instead of a stored map (seed format; AMRL if *.vectormap.txt)");
@@ -157,9 +159,14 @@ void add_plan_command(CLI::App& app, CliContext& ctx, int* exit_code) {
   cmd->footer(
       "The map's objects whose height range starts below --body-height block, and so does every avoided area "
       "(docs/semantic-layer.md, 'Planning with objects'). "
-      "Prints one 'x y' waypoint a line, then 'length L'. Exit codes: 0 path found, 2 malformed input, "
+      "Prints one 'x y' waypoint a line, then 'length L'. Exit codes: 0 path found, 1 failure (database, I/O: "
+      "a map file that cannot be read), 2 malformed input, "
       "3 no path (start or goal blocked, or none found within the limits), 4 no such map, 64 usage.");
-  cmd->callback([a, &ctx, exit_code] { *exit_code = run_plan(*a, ctx); });
+  run_with(*cmd, a, ctx, run_plan);
 }
+
+}  // namespace
+
+void add_plan_command(CLI::App& app, CliContext& ctx) { add_plan(app, ctx); }
 
 }  // namespace fleetmap

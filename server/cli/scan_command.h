@@ -7,6 +7,6 @@
 
 namespace fleetmap {
 
-void add_scan_command(CLI::App& app, CliContext& ctx, int* exit_code);
+void add_scan_command(CLI::App& app, CliContext& ctx);
 
 }  // namespace fleetmap

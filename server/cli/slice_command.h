@@ -11,7 +11,7 @@
 
 namespace fleetmap {
 
-// Adds `slice` to the existing `map` subcommand of app; it sets *exit_code when it runs.
-void add_slice_command(CLI::App& app, CliContext& ctx, int* exit_code);
+// Adds `slice` to the existing `map` subcommand of app.
+void add_slice_command(CLI::App& app, CliContext& ctx);
 
 }  // namespace fleetmap

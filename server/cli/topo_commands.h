@@ -13,7 +13,7 @@
 
 namespace fleetmap {
 
-// Adds the "topo" subcommand to app; each command sets *exit_code when it runs.
-void add_topo_commands(CLI::App& app, CliContext& ctx, int* exit_code);
+// Adds the "topo" subcommand (with its subcommands) to app.
+void add_topo_commands(CLI::App& app, CliContext& ctx);
 
 }  // namespace fleetmap

@@ -11,6 +11,7 @@
 #include "protocol/connection.h"
 #include "app/cli_context.h"
 #include "app/exit_codes.h"
+#include "app/run_program.h"
 #include "server/daemon/request_loop.h"
 #include "server/daemon/stall_guard.h"
 
@@ -27,70 +28,61 @@ int main(int argc, char** argv) {
   ctx.add_connection_options(app);
   ServerConfig cfg;
   std::map<std::string, std::string> flags;
-  auto setting = [&](const std::string& flag, const std::string& key, const std::string& help) {
-    app.add_option_function<std::string>(flag, [&flags, key](const std::string& v) { flags[key] = v; }, help);
+  // The value goes to ServerConfig::apply as text, like the config file's (one check, one
+  // message); type is what --help shows.
+  auto setting = [&](const std::string& flag, const std::string& key, const std::string& type, const std::string& help) {
+    app.add_option_function<std::string>(flag, [&flags, key](const std::string& v) { flags[key] = v; }, help)
+        ->type_name(type);
   };
-  setting("--alive-period", "alive_period_s", "Alive period told to robots, s (default 1)");
-  setting("--lost-after", "lost_after_periods", "silent this many Alive periods -> lost (default 5)");
-  setting("--workers", "workers", "worker threads, each with its own connection (default 2)");
-  setting("--poll-max-ms", "poll_max_ms", "idle polling back-off ceiling, ms (default 10)");
-  setting("--batch-robots", "batch_robots", "robots claimed per transaction (default 16)");
-  setting("--batch-requests", "batch_requests", "requests of one robot per transaction (default 32)");
-  setting("--max-full-map-segments", "max_full_map_segments", "larger maps go out as a window on Ready (default 20000)");
-  setting("--ready-window", "ready_window_m", "side of that window, m (default 100)");
-  setting("--max-window", "max_window_m", "GetMap sides are capped to this, m (default 1000)");
-  setting("--max-image-bytes", "max_image_bytes", "SendImage payload limit (default 8 MiB)");
-  setting("--goal-tolerance", "goal_tolerance_m", "Stopped within this of the goal -> task done, m (default 0.5)");
-  setting("--robot-radius", "robot_radius_m", "radius robots are planned with (GetPath), m (default 0.3)");
-  setting("--object-ttl", "object_ttl_s",
+  setting("--alive-period", "alive_period_s", "SECONDS", "Alive period told to robots, s (default 1)");
+  setting("--lost-after", "lost_after_periods", "FLOAT", "silent this many Alive periods -> lost (default 5)");
+  setting("--workers", "workers", "UINT", "worker threads, each with its own connection (default 2)");
+  setting("--poll-max-ms", "poll_max_ms", "MS", "idle polling back-off ceiling, ms (default 10)");
+  setting("--batch-robots", "batch_robots", "UINT", "robots claimed per transaction (default 16)");
+  setting("--batch-requests", "batch_requests", "UINT", "requests of one robot per transaction (default 32)");
+  setting("--max-full-map-segments", "max_full_map_segments", "UINT",
+          "larger maps go out as a window on Ready (default 20000)");
+  setting("--ready-window", "ready_window_m", "METRES", "side of that window, m (default 100)");
+  setting("--max-window", "max_window_m", "METRES", "GetMap sides are capped to this, m (default 1000)");
+  setting("--max-image-bytes", "max_image_bytes", "BYTES", "SendImage payload limit (default 8 MiB)");
+  setting("--goal-tolerance", "goal_tolerance_m", "METRES",
+          "Stopped within this of the goal -> task done, m (default 0.5)");
+  setting("--robot-radius", "robot_radius_m", "METRES", "radius robots are planned with (GetPath), m (default 0.3)");
+  setting("--object-ttl", "object_ttl_s", "SECONDS",
           "SetObject: an observed object expires this long after it was last seen, s (default 300)");
-  setting("--commit-delay-ms", "commit_delay_ms",
+  setting("--commit-delay-ms", "commit_delay_ms", "MS",
           "tests only: wait this long before each batch's COMMIT, so that a SIGKILL lands in flight (default 0)");
   std::string log_level = "info";
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error")->capture_default_str();
   bool check = false;
   app.add_flag("--check", check, "connect with the server account, print the settings, and exit");
   app.footer("Exit codes: 0 stopped cleanly, 1 failure, 2 bad setting, 64 usage.");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : exit_code::kUsage;
-  }
-  spdlog::set_level(spdlog::level::from_str(log_level));
-  spdlog::set_pattern("%Y-%m-%d %H:%M:%S.%e %^%-5l%$ %v");
+  return run_program("fleetmap-server", app, argc, argv, [&]() -> int {
+    spdlog::set_level(spdlog::level::from_str(log_level));
+    spdlog::set_pattern("%Y-%m-%d %H:%M:%S.%e %^%-5l%$ %v");
 
-  DbSettings db;
-  try {
-    db = ctx.settings();
+    // A bad setting is exit 2, an unreadable config file or no database 1 (exit_code_for).
+    const DbSettings db = ctx.settings();
     cfg.apply(db.program);
     cfg.apply(flags);
-  } catch (const std::exception& e) {
-    std::cerr << "fleetmap-server: " << e.what() << "\n";
-    return exit_code::kBadInput;
-  }
-  if (check) {
-    try {
+    if (check) {
       connect(db);
       std::cout << "fleetmap-server: connected as " << describe(db) << "; alive period " << cfg.alive_period_s
                 << " s, " << cfg.workers << " workers\n";
       return exit_code::kOk;
-    } catch (const std::exception& e) {
-      std::cerr << "fleetmap-server: " << e.what() << "\n";
-      return exit_code::kFailure;
     }
-  }
 
-  std::signal(SIGTERM, on_signal);
-  std::signal(SIGINT, on_signal);
-  spdlog::info("fleetmap-server starting: {} worker(s), database {}", cfg.workers, describe(db));
-  MapCache cache;
-  PlannerCache planners;
-  std::vector<std::thread> workers;
-  for (int i = 0; i < cfg.workers; ++i)
-    workers.emplace_back([&, i] { RequestLoop(db, cfg, cache, planners, g_stop, i, i == 0).run(); });
-  workers.emplace_back([&] { StallGuard(db, g_stop, std::chrono::milliseconds(250)).run(); });
-  for (auto& t : workers) t.join();
-  spdlog::info("fleetmap-server stopped");
-  return exit_code::kOk;
+    std::signal(SIGTERM, on_signal);
+    std::signal(SIGINT, on_signal);
+    spdlog::info("fleetmap-server starting: {} worker(s), database {}", cfg.workers, describe(db));
+    MapCache cache;
+    PlannerCache planners;
+    std::vector<std::thread> workers;
+    for (int i = 0; i < cfg.workers; ++i)
+      workers.emplace_back([&, i] { RequestLoop(db, cfg, cache, planners, g_stop, i, i == 0).run(); });
+    workers.emplace_back([&] { StallGuard(db, g_stop, std::chrono::milliseconds(250)).run(); });
+    for (auto& t : workers) t.join();
+    spdlog::info("fleetmap-server stopped");
+    return exit_code::kOk;
+  });
 }

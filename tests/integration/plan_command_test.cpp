@@ -97,7 +97,7 @@ TEST(PlanCommand, ObjectsAndAvoidedAreasBlock) {
 TEST(PlanCommand, BadInputAndUsage) {
   const std::string file = source_path("maps/example-campus.map");
   EXPECT_EQ(run("fleetmap", "plan --file " + file + " 1 1 abc 3").exit_code, 2);
-  EXPECT_EQ(run("fleetmap", "plan --file " + temp_path("missing.map") + " 1 1 3 3").exit_code, 2);
+  EXPECT_EQ(run("fleetmap", "plan --file " + temp_path("missing.map") + " 1 1 3 3").exit_code, 1);  // I/O
   EXPECT_EQ(run("fleetmap", "plan --file " + file + " 1 1 3").exit_code, 64);
   EXPECT_EQ(run("fleetmap", "plan --file " + file + " name 1 1 3 3").exit_code, 64);
   EXPECT_EQ(run("fleetmap", "plan it_no_such_map 1 1 3 3").exit_code, 4);
