@@ -14,7 +14,6 @@ constexpr const char* kTaskColumns =
 constexpr const char* kOpenStates = "('assigned', 'acknowledged', 'active')";
 
 std::string n(double v) { return format_number(v); }
-std::string n(const std::optional<double>& v) { return v ? format_number(*v) : "NULL"; }
 
 TaskRow read_task(const mysqlpp::Row& r) {
   TaskRow t;

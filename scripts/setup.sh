@@ -11,6 +11,7 @@ PACKAGES=(
   libmysql++-dev mariadb-server mariadb-client
   libboost-dev libboost-system-dev libeigen3-dev nlohmann-json3-dev libcli11-dev
   libspdlog-dev zlib1g-dev googletest libgtest-dev libgmock-dev libbenchmark-dev
+  clang libclang-rt-14-dev llvm
 )
 
 missing=()

@@ -1,0 +1,36 @@
+# Checking builds, all off by default; scripts/test.sh turns them on in CI.
+#   FLEETMAP_WERROR    -Werror on top of -Wall -Wextra (g++ and clang++); on by default
+#                      when CI=true, so that setup.sh's build in CI is already the one
+#                      test.sh checks (another flag would rebuild everything)
+#   FLEETMAP_SANITIZE  AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer
+#                      in every target; the first report aborts the program
+#   FLEETMAP_FUZZ      libFuzzer targets in fuzz/ (clang only; implies FLEETMAP_SANITIZE)
+if("$ENV{CI}" STREQUAL "true")
+  option(FLEETMAP_WERROR "Treat compiler warnings as errors" ON)
+else()
+  option(FLEETMAP_WERROR "Treat compiler warnings as errors" OFF)
+endif()
+option(FLEETMAP_SANITIZE "Build with -fsanitize=address,undefined" OFF)
+option(FLEETMAP_FUZZ "Build the libFuzzer targets in fuzz/ (clang only)" OFF)
+
+if(FLEETMAP_WERROR)
+  add_compile_options(-Werror)
+endif()
+
+if(FLEETMAP_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    message(FATAL_ERROR "FLEETMAP_FUZZ needs clang++ (libFuzzer), got ${CMAKE_CXX_COMPILER_ID}: "
+                        "configure with -DCMAKE_CXX_COMPILER=clang++")
+  endif()
+  # A fuzzer without ASan misses most memory errors, and the libraries it links are
+  # instrumented for it, so every program then needs the sanitizer runtime too.
+  set(FLEETMAP_SANITIZE ON CACHE BOOL "Build with -fsanitize=address,undefined" FORCE)
+endif()
+
+if(FLEETMAP_SANITIZE)
+  set(FLEETMAP_SANITIZER_FLAGS -fsanitize=address,undefined -fno-sanitize-recover=undefined)
+  # -O1 -g1 after the build type's -O3: reports with line numbers and usable stacks, and
+  # a build about as fast as Release.
+  add_compile_options(${FLEETMAP_SANITIZER_FLAGS} -fno-omit-frame-pointer -O1 -g1)
+  add_link_options(${FLEETMAP_SANITIZER_FLAGS})
+endif()
