@@ -232,7 +232,8 @@ std::string polygon_to_wkt(const Polygon& ring) {
   std::string s = "POLYGON((";
   for (size_t i = 0; i <= ring.size(); ++i) {
     const Point p = ring[i % ring.size()];
-    s += (i ? "," : "") + n(p.x) + " " + n(p.y);
+    if (i) s += ',';
+    s += n(p.x) + " " + n(p.y);
   }
   return s + "))";
 }
