@@ -240,7 +240,12 @@ SetPoseParams decode_set_pose(const Json& j) {
 ErrorParams decode_error(const Json& j) {
   require_object(j);
   ErrorParams p;
-  if (const Json* r = find(j, "request_id"); r && !r->is_null()) p.request_id = static_cast<unsigned long long>(integer(j, "request_id"));
+  // Request ids are rr's AUTO_INCREMENT ids, so >= 1; a negative one must not wrap.
+  if (const Json* r = find(j, "request_id"); r && !r->is_null()) {
+    const long long id = integer(j, "request_id");
+    if (id <= 0) bad("request_id", "a positive integer");
+    p.request_id = static_cast<unsigned long long>(id);
+  }
   const Json* c = find(j, "code");
   if (!c || !c->is_string() || !parse_error_code(c->get<std::string>())) bad("code", "an error code");
   p.code = *parse_error_code(c->get<std::string>());

@@ -14,7 +14,6 @@ constexpr const char* kTaskColumns =
     "id, robot_id, goal_x, goal_y, state, answer_id, abort_answer_id, abort_requested_at IS NOT NULL, reason";
 
 std::string n(double v) { return format_number(v); }
-std::string n(const std::optional<double>& v) { return v ? format_number(*v) : "NULL"; }
 
 TaskRow read_task(const mysqlpp::Row& r) {
   TaskRow t;

@@ -74,7 +74,10 @@ std::vector<std::string> WriteBatch::statements() {
   for (std::string& s : robot_updates_) out.push_back(std::move(s));
   if (!removed_.empty()) {
     std::string s = "DELETE FROM rr WHERE id IN (";
-    for (size_t i = 0; i < removed_.size(); ++i) s += (i ? "," : "") + std::to_string(removed_[i]);
+    for (size_t i = 0; i < removed_.size(); ++i) {
+      if (i) s += ',';
+      s += std::to_string(removed_[i]);
+    }
     out.push_back(s + ")");
   }
   answers_.clear();

@@ -12,6 +12,7 @@ PACKAGES=(
   libboost-dev libboost-system-dev libeigen3-dev nlohmann-json3-dev libcli11-dev
   libspdlog-dev zlib1g-dev googletest libgtest-dev libgmock-dev
   dpkg-dev file
+  clang libclang-rt-14-dev llvm
 )
 
 missing=()

@@ -146,7 +146,7 @@ class TrackingSax {
   bool binary(Json::binary_t& v) { return value(), dom_.binary(v); }
   bool start_object(std::size_t n) {
     value();
-    frames_.push_back({false});
+    frames_.push_back({false, 0, {}});
     return dom_.start_object(n);
   }
   bool key(Json::string_t& k) {
@@ -159,7 +159,7 @@ class TrackingSax {
   }
   bool start_array(std::size_t n) {
     value();
-    frames_.push_back({true});
+    frames_.push_back({true, 0, {}});
     return dom_.start_array(n);
   }
   bool end_array() {

@@ -263,7 +263,9 @@ TEST(SceneGeojson, MalformedInputsNameFeatureAndField) {
       EXPECT_NE(std::string(e.what()).find(c.words), std::string::npos) << e.what();
       const std::string prefix = c.feature < 0 ? "document" : "feature " + std::to_string(c.feature);
       EXPECT_EQ(std::string(e.what()).rfind(prefix, 0), 0u) << e.what();
-      if (!c.field.empty()) EXPECT_NE(std::string(e.what()).find("(" + c.field + "): "), std::string::npos) << e.what();
+      if (!c.field.empty()) {
+        EXPECT_NE(std::string(e.what()).find("(" + c.field + "): "), std::string::npos) << e.what();
+      }
     }
     EXPECT_FALSE(scene.has_value());
   }
@@ -310,7 +312,9 @@ TEST(SceneGeojson, TagTable) {
     } catch (const SceneFormatError& e) {
       EXPECT_EQ(e.feature(), b.entry) << e.what();
       EXPECT_EQ(e.field(), b.field) << e.what();
-      if (b.entry >= 0) EXPECT_EQ(std::string(e.what()).rfind("entry " + std::to_string(b.entry), 0), 0u) << e.what();
+      if (b.entry >= 0) {
+        EXPECT_EQ(std::string(e.what()).rfind("entry " + std::to_string(b.entry), 0), 0u) << e.what();
+      }
     }
   }
 }

@@ -150,7 +150,7 @@ TEST(TopoJson, RealFilesRoundTripByteForByte) {
 TEST(TopoJson, EveryTypeNameAndLimitRoundTrips) {
   TopoGraph g;
   g.add_node({3, {0.1, -2.5}, "dock"});
-  g.add_node({1, {1e-7, 123456.789}});
+  g.add_node({1, {1e-7, 123456.789}, ""});
   g.add_node({2, {-0.0, 5}, "desk \"A\" / ä"});
   auto add = [&](int a, int b, EdgeType t, bool door, bool automated, double clearance, double speed) {
     TopoEdge e;

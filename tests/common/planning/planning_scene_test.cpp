@@ -194,7 +194,10 @@ TEST(PlanningScene, AvoidedAreasNeverEnteredInTheExampleRoom) {
 Scene random_scene(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(0, 1);
   auto shape = [&](Point c, double size) {
-    if (u(rng) < 0.5) return rectangle_footprint(c, size * (0.3 + u(rng)), size * (0.3 + u(rng)), 2 * std::numbers::pi * u(rng));
+    if (u(rng) < 0.5) {
+      const double angle = 2 * std::numbers::pi * u(rng), h = size * (0.3 + u(rng)), w = size * (0.3 + u(rng));
+      return rectangle_footprint(c, w, h, angle);
+    }
     Polygon star;  // vertices at increasing angles round c: always simple
     const int n = 3 + static_cast<int>(u(rng) * 6);
     for (int i = 0; i < n; ++i) {
@@ -204,13 +207,18 @@ Scene random_scene(std::mt19937_64& rng) {
     return star;
   };
   auto centre = [&] { return Point{1 + 18 * u(rng), 1 + 18 * u(rng)}; };
+  // Every draw in its own statement, last argument first: argument evaluation order is
+  // unspecified (g++ goes right to left, clang++ left to right), and both compilers must
+  // build the same scenes.
   Scene s;
   for (int i = 0; i < 10; ++i) {
     EnvObject o{"o-" + std::to_string(i), "thing", {}, false};
     const Point c = centre();
     const int parts = 1 + static_cast<int>(u(rng) * 3);
     for (int k = 0; k < parts; ++k) {
-      Element e{shape({c.x + u(rng) - 0.5, c.y + u(rng) - 0.5}, 0.3 + 1.2 * u(rng)), std::nullopt};
+      const double size = 0.3 + 1.2 * u(rng);
+      const Point at{c.x + u(rng) - 0.5, c.y + u(rng) - 0.5};
+      Element e{shape(at, size), std::nullopt};
       if (u(rng) < 0.8) {
         const double zmin = 1.5 * u(rng);
         e.z = HeightRange{zmin, zmin + 0.05 + u(rng)};
@@ -219,8 +227,14 @@ Scene random_scene(std::mt19937_64& rng) {
     }
     s.objects.push_back(std::move(o));
   }
-  s.avoided.push_back({"big", rectangle_footprint(centre(), 4 + 3 * u(rng), 4 + 3 * u(rng), u(rng))});
-  for (int i = 0; i < 3; ++i) s.avoided.push_back({"a-" + std::to_string(i), shape(centre(), 0.5 + 1.5 * u(rng))});
+  const double angle = u(rng), h = 4 + 3 * u(rng), w = 4 + 3 * u(rng);
+  const Point big = centre();
+  s.avoided.push_back({"big", rectangle_footprint(big, w, h, angle)});
+  for (int i = 0; i < 3; ++i) {
+    const double size = 0.5 + 1.5 * u(rng);
+    const Point c = centre();
+    s.avoided.push_back({"a-" + std::to_string(i), shape(c, size)});
+  }
   return s;
 }
 

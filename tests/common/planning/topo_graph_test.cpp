@@ -22,9 +22,14 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 const std::string kMaps = FLEETMAP_REAL_MAPS;
 
-TopoGraph graph(const std::vector<TopoNode>& nodes, const std::vector<TopoEdge>& edges) {
+struct UnnamedNode {  // {id, {x, y}}: the hand graphs' nodes have no names
+  int id;
+  Point pos;
+};
+
+TopoGraph graph(const std::vector<UnnamedNode>& nodes, const std::vector<TopoEdge>& edges) {
   TopoGraph g;
-  for (const TopoNode& n : nodes) g.add_node(n);
+  for (const UnnamedNode& n : nodes) g.add_node({n.id, n.pos, ""});
   for (const TopoEdge& e : edges) g.add_edge(e);
   return g;
 }
@@ -169,7 +174,7 @@ TEST(TopoGraph, MatchesFloydWarshallOnRandomGraphs) {
   size_t routes = 0, none = 0;
   for (int trial = 0; trial < 40; ++trial) {
     const int n = 5 + static_cast<int>(rng() % 30);
-    std::vector<TopoNode> nodes;
+    std::vector<UnnamedNode> nodes;
     std::vector<int> ids;
     for (int i = 0; i < n; ++i) ids.push_back(3 * i + 1);  // not 0..n-1: ids are not indices
     std::shuffle(ids.begin(), ids.end(), rng);
@@ -216,10 +221,10 @@ TEST(TopoGraph, NearestNode) {
 
 TEST(TopoGraph, BuildingRefusesBrokenGraphs) {
   TopoGraph g = graph({{0, {0, 0}}, {1, {1, 0}}}, {});
-  EXPECT_THROW(g.add_node({1, {2, 2}}), TopoGraphError);   // id taken
-  EXPECT_THROW(g.add_node({-1, {2, 2}}), TopoGraphError);  // negative id
-  EXPECT_THROW(g.add_node({2, {NAN, 2}}), TopoGraphError);
-  EXPECT_THROW(g.add_node({2, {2, kInf}}), TopoGraphError);
+  EXPECT_THROW(g.add_node({1, {2, 2}, ""}), TopoGraphError);   // id taken
+  EXPECT_THROW(g.add_node({-1, {2, 2}, ""}), TopoGraphError);  // negative id
+  EXPECT_THROW(g.add_node({2, {NAN, 2}, ""}), TopoGraphError);
+  EXPECT_THROW(g.add_node({2, {2, kInf}, ""}), TopoGraphError);
   EXPECT_THROW(g.add_edge(edge(0, 9)), TopoGraphError);
   EXPECT_THROW(g.add_edge(edge(1, 1)), TopoGraphError);
   EXPECT_THROW(g.add_edge(edge(0, 1, EdgeType::Corridor, -1)), TopoGraphError);
