@@ -1,4 +1,6 @@
 #include "server/cli/plan_command.h"
+
+#include "common/geometry/number_format.h"
 #include "server/cli/map_source.h"
 
 #include <cmath>
@@ -47,9 +49,7 @@ Map load_map(const PlanArgs& a, CliContext& ctx, std::string* name) {
 // Why an object blocks: it starts below the body's top (see --body-height).
 std::string body_note(const std::string& name, const PlanArgs& a) {
   if (name.rfind("object:", 0) != 0) return "";
-  char b[96];
-  std::snprintf(b, sizeof b, ", which a body %g m tall cannot pass (see --body-height)", a.body_height);
-  return b;
+  return ", which a body " + format_number(a.body_height) + " m tall cannot pass (see --body-height)";
 }
 
 std::string describe(Point p) {

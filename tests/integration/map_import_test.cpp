@@ -72,7 +72,7 @@ TEST(MapImport, MalformedFileAtLineNChangesNothing) {
   write_file(bad, text);
 
   const std::string before = db_fingerprint();
-  for (const std::string& args : {"--name it_new", "--name it_keep --replace"}) {
+  for (const char* args : {"--name it_new", "--name it_keep --replace"}) {
     SCOPED_TRACE(args);
     RunResult r = run("fleetmap", "map import " + bad + " " + args);
     EXPECT_EQ(r.exit_code, 2);

@@ -97,8 +97,11 @@ TEST_F(SceneStoreTest, ExampleSceneReadsBackEqual) {
   for (const mysqlpp::Row& r : q.store()) {
     const std::string key(r[0]);
     const size_t ord = std::stoul(std::string(r[1]));
-    for (const EnvObject& o : scene_.objects)
-      if (o.id == key) EXPECT_NEAR(std::stod(std::string(r[2])), polygon_area(o.elements.at(ord).footprint), 1e-9) << key;
+    for (const EnvObject& o : scene_.objects) {
+      if (o.id == key) {
+        EXPECT_NEAR(std::stod(std::string(r[2])), polygon_area(o.elements.at(ord).footprint), 1e-9) << key;
+      }
+    }
     EXPECT_EQ(std::string(r[3]), "1") << key;
     ++elements;
   }
@@ -229,7 +232,9 @@ TEST_F(SceneStoreTest, ReplaceKeepsObservationsAndAddTagsExtendsTheVocabulary) {
   EXPECT_EQ(cls, "obstacle");
   EXPECT_FALSE(store.set_tag("ss_lamp", "landmark", std::string("a lamp")));
   for (const TagInfo& t : store.tags()) {
-    if (t.tag == "ss_lamp") EXPECT_EQ(t, (TagInfo{"ss_lamp", "landmark", "a lamp"}));
+    if (t.tag == "ss_lamp") {
+      EXPECT_EQ(t, (TagInfo{"ss_lamp", "landmark", "a lamp"}));
+    }
   }
   EXPECT_THROW(store.set_tag("ss_lamp", "furniture", std::nullopt), std::invalid_argument);
   EXPECT_THROW(store.set_tag("a:b", "obstacle", std::nullopt), std::invalid_argument);

@@ -150,7 +150,9 @@ TEST(GridFrame, SegmentWalkCoversEveryCellNearTheSegment) {
       for (double dx : {-grow, 0.0, grow})
         for (double dy : {-grow, 0.0, grow}) {
           const int64_t ix = f.col(p.x + dx * 0.99), iy = f.row(p.y + dy * 0.99);
-          if (f.inside(ix, iy)) EXPECT_TRUE(visited.count({int(ix), int(iy)})) << ix << " " << iy << " k=" << k;
+          if (f.inside(ix, iy)) {
+            EXPECT_TRUE(visited.count({int(ix), int(iy)})) << ix << " " << iy << " k=" << k;
+          }
         }
     }
   }
