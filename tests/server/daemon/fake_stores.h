@@ -127,7 +127,7 @@ inline Map walled_room() {
   wall.id = 1;
   wall.type = ShapeType::ClosedPolygon;
   const Point c[] = {{9.9, 0}, {10.1, 0}, {10.1, 6}, {9.9, 6}};
-  for (int i = 0; i < 4; ++i) wall.segments.push_back({c[i], c[(i + 1) % 4], 1.0});
+  for (int i = 0; i < 4; ++i) wall.segments.push_back({.a = c[i], .b = c[(i + 1) % 4], .h = 1.0});
   m.obstacles.push_back(wall);
   m.compute_bounds();
   return m;
