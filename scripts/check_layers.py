@@ -16,7 +16,7 @@ import sys
 
 # common/ in order, lowest first; a layer includes its own and lower ones. core (the
 # exception root) may not exist yet: a missing folder is simply never seen.
-COMMON_ORDER = ["core", "geometry", "map", "scene", "raycast", "slicing", "planning", "io"]
+COMMON_ORDER = ["core", "geometry", "map", "scene", "raycast", "slicing", "planning", "io", "gis"]
 
 CHECKED = ["common", "protocol", "app", "server", "client"]
 # Folders the product never includes, whatever its layer.

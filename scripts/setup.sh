@@ -13,6 +13,8 @@ PACKAGES=(
   libspdlog-dev zlib1g-dev googletest libgtest-dev libgmock-dev
   dpkg-dev file
   clang libclang-rt-14-dev llvm
+  libgdal-dev gdal-bin libproj-dev proj-bin
+  libjs-leaflet chromium
 )
 
 missing=()
