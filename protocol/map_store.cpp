@@ -44,14 +44,21 @@ MapInfo info_from_row(const mysqlpp::Row& r) {
   i.segments = static_cast<size_t>(to_int(r[7]));
   i.source = std::string(r[8]);
   i.imported_at = std::string(r[9]);
-  if (!r[10].is_null()) i.geo_lat = to_double(r[10]);
-  if (!r[11].is_null()) i.geo_lon = to_double(r[11]);
-  if (!r[12].is_null()) i.geo_heading = to_double(r[12]);
+  if (!r[10].is_null()) {
+    MapGeoref g;
+    g.crs = std::string(r[10]);
+    g.tx = to_double(r[11]);
+    g.ty = to_double(r[12]);
+    g.rotation = to_double(r[13]);
+    g.scale = to_double(r[14]);
+    i.georef = std::move(g);
+  }
   return i;
 }
 
 constexpr const char* kInfoColumns =
-    "id, name, mx1, my1, mx4, my4, obstacles, segments, source, imported_at, geo_lat, geo_lon, geo_heading";
+    "id, name, mx1, my1, mx4, my4, obstacles, segments, source, imported_at, geo_crs, geo_tx, geo_ty, geo_rotation, "
+    "geo_scale";
 
 // Segment columns in the order read_segment expects, from table alias s.
 constexpr const char* kSegmentColumns = "s.obstacle_ord, s.ax, s.ay, s.bx, s.`by`, s.h, s.in_out, s.semantic, s.note";
@@ -194,11 +201,15 @@ std::optional<MapInfo> MapStore::info(unsigned id) {
   return info_from_row(res[0]);
 }
 
-void MapStore::set_georef(const std::string& name, std::optional<double> lat, std::optional<double> lon,
-                          double heading) {
+void MapStore::set_georef(const std::string& name, const std::optional<MapGeoref>& g) {
   mysqlpp::Query q = c_.query();
-  q << "UPDATE maps SET geo_lat = " << (lat ? n(*lat) : "NULL") << ", geo_lon = " << (lon ? n(*lon) : "NULL")
-    << ", geo_heading = " << (lat ? n(heading) : "NULL") << " WHERE name = " << mysqlpp::quote << name;
+  if (g) {
+    q << "UPDATE maps SET geo_crs = " << mysqlpp::quote << g->crs << ", geo_tx = " << n(g->tx)
+      << ", geo_ty = " << n(g->ty) << ", geo_rotation = " << n(g->rotation) << ", geo_scale = " << n(g->scale);
+  } else {
+    q << "UPDATE maps SET geo_crs = NULL, geo_tx = NULL, geo_ty = NULL, geo_rotation = NULL, geo_scale = NULL";
+  }
+  q << " WHERE name = " << mysqlpp::quote << name;
   if (q.execute().rows() == 0) info(name);  // throws MapNotFound when there is no such map
 }
 

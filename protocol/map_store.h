@@ -10,6 +10,7 @@
 #include <mysql++/mysql++.h>
 
 #include "common/map/map.h"
+#include "common/map/map_georef.h"
 #include "common/core/error.h"
 
 namespace fleetmap {
@@ -22,8 +23,8 @@ struct MapInfo {
   size_t segments = 0;
   std::string source;
   std::string imported_at;
-  // Georeference (maps.geo_*): the map origin's WGS84 position, the x axis heading.
-  std::optional<double> geo_lat, geo_lon, geo_heading;
+  // Georeference (maps.geo_*): the base CRS and the similarity from the map frame to it.
+  std::optional<MapGeoref> georef;
 };
 
 class MapNotFound : public NotFound {
@@ -60,8 +61,9 @@ class MapStore {
   std::vector<MapInfo> list();
   MapInfo info(const std::string& name);  // throws MapNotFound
   std::optional<MapInfo> info(unsigned id);
-  // Sets or clears (nullopt) a map's georeference; throws MapNotFound.
-  void set_georef(const std::string& name, std::optional<double> lat, std::optional<double> lon, double heading);
+  // Sets or clears (nullopt) a map's georeference, as given (the caller checked it
+  // with GeoTransform); throws MapNotFound.
+  void set_georef(const std::string& name, const std::optional<MapGeoref>& georef);
   Map load(const std::string& name);
   bool remove(const std::string& name);
 

@@ -17,11 +17,14 @@ CREATE TABLE IF NOT EXISTS maps (
   obstacles   INT UNSIGNED NOT NULL DEFAULT 0,
   segments    INT UNSIGNED NOT NULL DEFAULT 0,
   imported_at TIMESTAMP(6) NOT NULL DEFAULT CURRENT_TIMESTAMP(6),
-  -- georeference (optional): the map origin's WGS84 position and the map x axis heading
-  -- (radians, counter-clockwise from east); SendGPS fixes get map coordinates from it
-  geo_lat     DOUBLE NULL,
-  geo_lon     DOUBLE NULL,
-  geo_heading DOUBLE NULL,
+  -- georeference (optional, common/map/map_georef.h): the base CRS as PROJ reads it and
+  -- the similarity base = (tx, ty) + scale * R(rotation) * map; SendGPS fixes and WGS 84
+  -- exports go through it. All NULL or all set.
+  geo_crs      TEXT NULL,
+  geo_tx       DOUBLE NULL,
+  geo_ty       DOUBLE NULL,
+  geo_rotation DOUBLE NULL,
+  geo_scale    DOUBLE NULL,
   UNIQUE KEY uq_maps_name (name)
 ) ENGINE=InnoDB;
 

@@ -16,3 +16,18 @@ ALTER TABLE robots ADD COLUMN IF NOT EXISTS radius DOUBLE NULL AFTER laser_heigh
 ALTER TABLE robots ADD COLUMN IF NOT EXISTS body_height DOUBLE NULL AFTER radius;
 ALTER TABLE robots ADD COLUMN IF NOT EXISTS can_stairs BOOLEAN NOT NULL DEFAULT FALSE AFTER body_height;
 ALTER TABLE robots ADD COLUMN IF NOT EXISTS can_ramps BOOLEAN NOT NULL DEFAULT TRUE AFTER can_stairs;
+
+-- GIS issue: a georeference is a CRS plus a similarity (common/map/map_georef.h). An
+-- origin + heading of the earlier columns becomes the local Transverse Mercator at the
+-- origin, rotated by the heading (common/gis/geo_transform.cpp local_tm_crs); then the
+-- earlier columns go.
+ALTER TABLE maps ADD COLUMN IF NOT EXISTS geo_crs TEXT NULL AFTER imported_at;
+ALTER TABLE maps ADD COLUMN IF NOT EXISTS geo_tx DOUBLE NULL AFTER geo_crs;
+ALTER TABLE maps ADD COLUMN IF NOT EXISTS geo_ty DOUBLE NULL AFTER geo_tx;
+ALTER TABLE maps ADD COLUMN IF NOT EXISTS geo_rotation DOUBLE NULL AFTER geo_ty;
+ALTER TABLE maps ADD COLUMN IF NOT EXISTS geo_scale DOUBLE NULL AFTER geo_rotation;
+UPDATE maps SET geo_crs = CONCAT('+proj=tmerc +lat_0=', geo_lat, ' +lon_0=', geo_lon,
+                                 ' +k=1 +x_0=0 +y_0=0 +ellps=WGS84 +units=m +type=crs'),
+                geo_tx = 0, geo_ty = 0, geo_rotation = COALESCE(geo_heading, 0), geo_scale = 1
+  WHERE geo_lat IS NOT NULL AND geo_lon IS NOT NULL AND geo_crs IS NULL;
+ALTER TABLE maps DROP COLUMN IF EXISTS geo_lat, DROP COLUMN IF EXISTS geo_lon, DROP COLUMN IF EXISTS geo_heading;

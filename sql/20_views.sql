@@ -3,7 +3,8 @@
 
 -- Every stored map with its border as a polygon.
 CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_maps AS
-  SELECT id, name, mx1, my1, mx4, my4, border, source, obstacles, segments, imported_at
+  SELECT id, name, mx1, my1, mx4, my4, border, source, obstacles, segments, imported_at,
+         geo_crs, geo_tx, geo_ty, geo_rotation, geo_scale
   FROM maps;
 
 -- Views over a table with a SPATIAL INDEX read that table first (STRAIGHT_JOIN): when

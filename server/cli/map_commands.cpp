@@ -9,6 +9,7 @@
 #include <iostream>
 #include <map>
 
+#include "common/gis/geo_transform.h"
 #include "common/io/amrl_import.h"
 #include "common/io/map_geojson.h"
 #include "common/io/map_svg.h"
@@ -230,11 +231,13 @@ struct MapGeorefArgs {
 int run_map_georef(const MapGeorefArgs& a, CliContext& ctx) {
   MapStore store(ctx.connection());
   if (a.clear) {
-    store.set_georef(a.name, std::nullopt, std::nullopt, 0);
+    store.set_georef(a.name, std::nullopt);
   } else {
     if (!a.lat || !a.lon) throw BadInput("expected LAT and LON, or --clear");
     if (!std::isfinite(a.heading)) throw BadInput("expected a finite --heading");
-    store.set_georef(a.name, *a.lat, *a.lon, a.heading);
+    const MapGeoref g = georef_from_origin(*a.lat, *a.lon, a.heading);
+    GeoTransform check(g);  // throws BadInput when PROJ cannot use it
+    store.set_georef(a.name, g);
   }
   std::printf("map '%s' %s\n", a.name.c_str(), a.clear ? "is no longer georeferenced" : "georeferenced");
   return exit_code::kOk;

@@ -261,10 +261,14 @@ TEST_F(ReferenceRobot, GpsFixesGetMapCoordinatesOnAGeoreferencedMap) {
   ready();
   // Origin at (41.389 N, 2.113 E), map x axis pointing north (heading pi/2).
   ASSERT_EQ(run("fleetmap", "map georef proto_map 41.389 2.113 --heading 1.5707963267948966").exit_code, 0);
-  auto a = ask("SendGPS", R"({"lat": 41.390, "lon": 2.113})", 1);  // 0.001 deg north: 111.195 m
+  auto a = ask("SendGPS", R"({"lat": 41.390, "lon": 2.113})", 1);
   ASSERT_EQ(a[0].op, "OpAck");
+  // 0.001 deg north on the WGS 84 ellipsoid: the meridian's radius of curvature
+  // M = a (1 - e2) / (1 - e2 sin^2 phi)^1.5 at the mid latitude, times the angle.
+  const double e2 = 0.00669437999014, phi = 41.3895 * M_PI / 180;
+  const double m = 6378137 * (1 - e2) / std::pow(1 - e2 * std::sin(phi) * std::sin(phi), 1.5);
   const std::string last = " FROM gps_fixes WHERE robot_id = " + std::to_string(robot_id_) + " ORDER BY id DESC LIMIT 1";
-  EXPECT_EQ(scalar("SELECT ROUND(x * 1000)" + last), 111195);  // north is +x
+  EXPECT_EQ(scalar("SELECT ROUND(x * 1000)" + last), std::lround(m * 0.001 * M_PI / 180 * 1000));  // north is +x
   EXPECT_EQ(scalar("SELECT ROUND(y * 1000)" + last), 0);
   ASSERT_EQ(run("fleetmap", "map georef proto_map --clear").exit_code, 0);
   ask("SendGPS", R"({"lat": 41.390, "lon": 2.113})", 1);

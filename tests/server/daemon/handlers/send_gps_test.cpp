@@ -1,6 +1,7 @@
 // SendGPS (SPEC 5.2): the fix, with map coordinates when the map is georeferenced; OpAck.
 #include <gtest/gtest.h>
 
+#include "common/gis/geo_transform.h"
 #include "tests/server/daemon/fake_stores.h"
 
 namespace fleetmap::fakes {
@@ -20,9 +21,7 @@ TEST(SendGps, StoresTheFixWithoutMapCoordinatesOnAMapWithoutGeoreference) {
 TEST(SendGps, OnAGeoreferencedMapTheFixGetsMapCoordinates) {
   Bench b;
   MapInfo& info = b.maps.maps.at(1).first;
-  info.geo_lat = 40.0;
-  info.geo_lon = -3.0;
-  info.geo_heading = 0;
+  info.georef = georef_from_origin(40.0, -3.0, 0);
   // 0.001 deg north of the origin: about 111 m along +y with the x axis heading east.
   const RequestWrites w = b.send("SendGPS", R"({"lat": 40.001, "lon": -3.0})");
   ASSERT_EQ(w.fixes.size(), 1u);
