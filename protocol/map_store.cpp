@@ -211,6 +211,11 @@ void MapStore::set_georef(const std::string& name, const std::optional<MapGeoref
   }
   q << " WHERE name = " << mysqlpp::quote << name;
   if (q.execute().rows() == 0) info(name);  // throws MapNotFound when there is no such map
+  // Control points describe the georeference they were fitted to (sql/55_georef.sql).
+  q.reset();
+  q << "DELETE c FROM georef_control_points c JOIN maps m ON m.id = c.map_id WHERE m.name = " << mysqlpp::quote
+    << name;
+  q.execute();
 }
 
 Map MapStore::load(const std::string& name) {

@@ -62,7 +62,8 @@ class MapStore {
   MapInfo info(const std::string& name);  // throws MapNotFound
   std::optional<MapInfo> info(unsigned id);
   // Sets or clears (nullopt) a map's georeference, as given (the caller checked it
-  // with GeoTransform); throws MapNotFound.
+  // with GeoTransform), and deletes the control points of the one before
+  // (protocol/georef_store.h); throws MapNotFound.
   void set_georef(const std::string& name, const std::optional<MapGeoref>& georef);
   Map load(const std::string& name);
   bool remove(const std::string& name);

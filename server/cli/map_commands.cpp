@@ -21,6 +21,7 @@
 #include "app/exit_codes.h"
 #include "common/core/error.h"
 #include "server/cli/command.h"
+#include "server/cli/georef_command.h"
 #include "server/cli/map_source.h"
 
 namespace fleetmap {
@@ -218,41 +219,6 @@ void add_map_delete(CLI::App& map, CliContext& ctx) {
   auto* cmd = map.add_subcommand("delete", "delete a stored map");
   cmd->add_option("NAME", a->name, "map name")->required();
   run_with(*cmd, a, ctx, run_map_delete);
-}
-
-// map georef NAME LAT LON [--heading H] | --clear
-struct MapGeorefArgs {
-  std::string name;
-  std::optional<double> lat, lon;
-  double heading = 0;
-  bool clear = false;
-};
-
-int run_map_georef(const MapGeorefArgs& a, CliContext& ctx) {
-  MapStore store(ctx.connection());
-  if (a.clear) {
-    store.set_georef(a.name, std::nullopt);
-  } else {
-    if (!a.lat || !a.lon) throw BadInput("expected LAT and LON, or --clear");
-    if (!std::isfinite(a.heading)) throw BadInput("expected a finite --heading");
-    const MapGeoref g = georef_from_origin(*a.lat, *a.lon, a.heading);
-    GeoTransform check(g);  // throws BadInput when PROJ cannot use it
-    store.set_georef(a.name, g);
-  }
-  std::printf("map '%s' %s\n", a.name.c_str(), a.clear ? "is no longer georeferenced" : "georeferenced");
-  return exit_code::kOk;
-}
-
-void add_map_georef(CLI::App& map, CliContext& ctx) {
-  auto a = std::make_shared<MapGeorefArgs>();
-  auto* cmd = map.add_subcommand("georef", "georeference a map: SendGPS fixes then get map coordinates");
-  cmd->add_option("NAME", a->name, "map name")->required();
-  cmd->add_option("LAT", a->lat, "latitude of the map origin (degrees, WGS84)")->check(CLI::Range(-90.0, 90.0));
-  cmd->add_option("LON", a->lon, "longitude of the map origin (degrees)")->check(CLI::Range(-180.0, 180.0));
-  cmd->add_option("--heading", a->heading, "direction of the map x axis, radians counter-clockwise from east")
-      ->capture_default_str();
-  cmd->add_flag("--clear", a->clear, "remove the georeference");
-  run_with(*cmd, a, ctx, run_map_georef);
 }
 
 // window NAME X Y W H: the partial map, seed format.
