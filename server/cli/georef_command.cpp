@@ -190,11 +190,12 @@ void add_map_georef(CLI::App& map, CliContext& ctx) {
   cmd->add_option("--control", a->controls,
                   "x,y,lat,lon: a control point, map metres and WGS 84 degrees; >= 2 give a least-squares fit "
                   "(write --control=x,y,lat,lon when x is negative)")
+      ->type_name("X,Y,LAT,LON")
       ->allow_extra_args(false);
   cmd->add_flag("--allow-scale", a->allow_scale,
                 "with --control: keep a fitted scale further than 1 % from 1 (a map not in metres)");
   cmd->add_option("--crs", a->crs, "the projected, metric CRS the map frame sits in (EPSG:26910, WKT, PROJ string)");
-  cmd->add_option("--offset", a->offset, "with --crs: TX,TY, the CRS coordinates of the map origin");
+  cmd->add_option("--offset", a->offset, "with --crs: TX,TY, the CRS coordinates of the map origin")->type_name("TX,TY");
   cmd->add_option("--rotation", a->rotation, "with --crs: the map x axis in the CRS, radians counter-clockwise");
   cmd->add_flag("--clear", a->clear, "remove the georeference and its control points");
   run_with(*cmd, a, ctx, run_map_georef);

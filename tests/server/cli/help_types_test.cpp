@@ -31,7 +31,7 @@ const std::vector<Case> kCases = {
     {"fleetmap", "", {"--port"}},
     {"fleetmap", "map check", {"--height", "--in-out", "--margin"}},
     {"fleetmap", "map import", {"--height", "--in-out", "--margin"}},
-    {"fleetmap", "map georef", {"LAT", "LON", "--heading"}},
+    {"fleetmap", "map georef", {"LAT", "LON", "--heading", "--control", "--offset", "--rotation"}},
     {"fleetmap", "window", {"X", "Y", "W", "H"}},
     {"fleetmap", "map slice", {"--height", "--resolution"}},
     {"fleetmap", "map nav2", {"--laser-height", "--resolution"}},
