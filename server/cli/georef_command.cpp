@@ -188,8 +188,7 @@ void add_map_georef(CLI::App& map, CliContext& ctx) {
   cmd->add_option("LON", a->lon, "longitude of the map origin (degrees)")->check(CLI::Range(-180.0, 180.0));
   cmd->add_option("--heading", a->heading, "with LAT LON: direction of the map x axis, radians counter-clockwise from east (default 0)");
   cmd->add_option("--control", a->controls,
-                  "x,y,lat,lon: a control point, map metres and WGS 84 degrees; >= 2 give a least-squares fit "
-                  "(write --control=x,y,lat,lon when x is negative)")
+                  "a control point, map metres and WGS 84 degrees; >= 2 give a least-squares fit")
       ->type_name("X,Y,LAT,LON")
       ->allow_extra_args(false);
   cmd->add_flag("--allow-scale", a->allow_scale,
