@@ -38,7 +38,7 @@ std::vector<double> numbers(const std::string& text, size_t n, const std::string
   std::vector<double> out;
   const char* p = text.data();
   const char* end = p + text.size();
-  while (p <= end) {
+  for (;;) {
     const char* comma = std::find(p, end, ',');
     double v = 0;
     auto [q, ec] = std::from_chars(p, comma, v);
@@ -47,6 +47,7 @@ std::vector<double> numbers(const std::string& text, size_t n, const std::string
       break;
     }
     out.push_back(v);
+    if (comma == end) break;
     p = comma + 1;
   }
   if (out.size() != n)

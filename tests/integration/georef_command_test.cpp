@@ -187,8 +187,13 @@ TEST(GeorefCommand, RefusesAScaleFarFromOneAndBadInput) {
 
 TEST(GeorefCommand, CrsWithOffsetAndRotation) {
   ensure_example_map("georef_map");
+  // A fit first: setting the CRS afterwards drops its control points.
+  ASSERT_EQ(run("fleetmap", std::string("map georef georef_map") + kControls).exit_code, 0);
+  const std::string points = "SELECT COUNT(*) FROM v_georef_control_points WHERE map = 'georef_map'";
+  ASSERT_EQ(scalar(points), 3);
   RunResult r = run("fleetmap", "map georef georef_map --crs EPSG:26910 --offset 481000.5,5456000.25 --rotation 0.1");
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(scalar(points), 0);
   const StoredGeoref g("georef_map");
   EXPECT_EQ(g.crs, "EPSG:26910");
   EXPECT_EQ(g.tx, 481000.5);
