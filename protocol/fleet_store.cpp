@@ -1,6 +1,7 @@
 #include "protocol/fleet_store.h"
 
 #include <cmath>
+#include <ctime>
 #include <map>
 
 #include "common/geometry/number_format.h"
@@ -186,10 +187,29 @@ std::vector<TaskInfo> FleetStore::tasks(const std::optional<std::string>& robot,
   return out;
 }
 
+namespace {
+
+// "1764635762.123456" (seconds since the epoch, as UNIX_TIMESTAMP gives them) ->
+// "2026-12-02T00:36:02.123456Z".
+std::string iso8601_utc(const std::string& unix_seconds) {
+  const size_t dot = unix_seconds.find('.');
+  const std::time_t secs = static_cast<std::time_t>(std::stoll(unix_seconds.substr(0, dot)));
+  std::string frac = dot == std::string::npos ? "" : unix_seconds.substr(dot + 1);
+  std::tm tm{};
+  gmtime_r(&secs, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%S", &tm);
+  return std::string(buf) + (frac.empty() ? "" : "." + frac) + "Z";
+}
+
+}  // namespace
+
 std::vector<TrajectoryPoint> FleetStore::trajectory(const std::string& robot, const std::optional<std::string>& since) {
   const unsigned id = robot_id(robot);
   mysqlpp::Query q = c_.query();
-  q << "SELECT t, x, y, theta, v FROM trajectories WHERE robot_id = " << id;
+  // UNIX_TIMESTAMP of a TIMESTAMP column is its stored UTC instant, not converted
+  // through the session's zone (which a DST change would make ambiguous).
+  q << "SELECT t, x, y, theta, v, UNIX_TIMESTAMP(t) FROM trajectories WHERE robot_id = " << id;
   if (since && !since->empty() && std::string("smhd").find(since->back()) != std::string::npos &&
       since->find_first_not_of("0123456789") == since->size() - 1) {
     static const std::map<char, long long> kSeconds{{'s', 1}, {'m', 60}, {'h', 3600}, {'d', 86400}};
@@ -202,7 +222,7 @@ std::vector<TrajectoryPoint> FleetStore::trajectory(const std::string& robot, co
   std::vector<TrajectoryPoint> out;
   for (const mysqlpp::Row& r : q.store())
     out.push_back({sql::to_string(r[0]), sql::to_double(r[1]), sql::to_double(r[2]), sql::to_double(r[3]),
-                   sql::to_double(r[4])});
+                   sql::to_double(r[4]), iso8601_utc(sql::to_string(r[5]))});
   return out;
 }
 

@@ -63,8 +63,11 @@ struct TaskInfo {
 };
 
 struct TrajectoryPoint {
-  std::string t;
+  std::string t;  // as the session's time zone shows it ('2026-12-02 01:36:02.123456')
   double x = 0, y = 0, theta = 0, v = 0;
+  // The same instant in ISO 8601 UTC ('2026-12-02T00:36:02.123456Z'), whatever the
+  // session's or the server's time zone: from the stored TIMESTAMP, which is UTC.
+  std::string t_utc;
 };
 
 class FleetStore {

@@ -252,22 +252,22 @@ std::string str(const std::string& s, const std::string& where) {
 }
 
 // One polygon's coordinates, the ring closed again as GeoJSON wants.
-std::string polygon_text(const Polygon& ring, const std::string& where) {
+std::string polygon_text(const Polygon& ring, const OutputFrame& f, const std::string& where) {
   if (ring.empty()) throw std::invalid_argument("scene GeoJSON: expected a polygon with vertices in " + where + ", got none");
   std::string out = "[[";
   for (size_t i = 0; i <= ring.size(); ++i) {
-    const Point p = ring[i % ring.size()];
+    const Point p = f.apply(ring[i % ring.size()]);
     out += std::string(i ? ",[" : "[") + num(p.x, where) + "," + num(p.y, where) + "]";
   }
   return out + "]]";
 }
 
 std::string feature_text(const std::string& props, const std::vector<const Polygon*>& polys, bool multi,
-                         const std::string& where) {
+                         const OutputFrame& f, const std::string& where) {
   std::string coords;
   for (const Polygon* p : polys) {
     if (!coords.empty()) coords += ",";
-    coords += polygon_text(*p, where);
+    coords += polygon_text(*p, f, where);
   }
   if (multi) coords = "[" + coords + "]";
   return "{\"type\":\"Feature\",\"properties\":{" + props + "},\"geometry\":{\"type\":\"" +
@@ -288,6 +288,11 @@ Scene read_scene_geojson(const std::string& text, const SceneReadOptions& option
   if (!doc.is_object()) r.fail("", "expected a FeatureCollection object, got " + describe(doc));
   const Json& type = r.member(doc, "type", "type");
   if (type != "FeatureCollection") r.fail("type", "expected \"FeatureCollection\", got " + describe(type));
+  // An export in WGS 84 (write_scene_geojson with another frame) read as metres would
+  // put the objects near the map origin, silently.
+  if (doc.contains("fleetmap") && doc["fleetmap"].is_object() && doc["fleetmap"].contains("frame") &&
+      doc["fleetmap"]["frame"] != "map")
+    r.fail("fleetmap.frame", "expected \"map\" (map-frame metres), got " + describe(doc["fleetmap"]["frame"]));
   const Json& features = r.array(r.member(doc, "features", "features"), "features");
 
   Scene scene;
@@ -299,13 +304,15 @@ Scene read_scene_geojson(const std::string& text, const SceneReadOptions& option
   return scene;
 }
 
-std::string write_scene_geojson(const Scene& scene) {
-  // Coordinates are map-frame metres, not WGS 84 (RFC 7946 3.1.1 allows it by prior
-  // arrangement); the "fleetmap" member says so to whoever opens the file.
-  std::string out = "{\"type\":\"FeatureCollection\",\"fleetmap\":{\"frame\":\"map\",\"units\":\"m\"},\"features\":[";
+std::string write_scene_geojson(const Scene& scene, const OutputFrame& frame) {
+  // Coordinates are map-frame metres unless the frame says otherwise (RFC 7946 section 4
+  // allows them by prior arrangement); the "fleetmap" member says which to whoever
+  // opens the file.
+  std::string out = "{\"type\":\"FeatureCollection\",\"fleetmap\":{\"frame\":" + str(frame.name, "the frame") +
+                    ",\"units\":" + str(frame.units, "the frame") + "},\"features\":[";
   const char* sep = "\n";
   if (scene.bounds) {
-    out += sep + feature_text("\"kind\":\"bounds\"", {&*scene.bounds}, false, "the bounds");
+    out += sep + feature_text("\"kind\":\"bounds\"", {&*scene.bounds}, false, frame, "the bounds");
     sep = ",\n";
   }
   for (const EnvObject& o : scene.objects) {
@@ -328,12 +335,12 @@ std::string write_scene_geojson(const Scene& scene) {
     }
     if (any_z) props += ",\"z\":" + z + "]";
     props += std::string(",\"dynamic\":") + (o.dynamic ? "true" : "false");
-    out += sep + feature_text(props, polys, polys.size() > 1, where);
+    out += sep + feature_text(props, polys, polys.size() > 1, frame, where);
     sep = ",\n";
   }
   for (const AvoidedArea& a : scene.avoided) {
     const std::string where = "avoided area " + a.id;
-    out += sep + feature_text("\"kind\":\"avoid\",\"id\":" + str(a.id, where), {&a.area}, false, where);
+    out += sep + feature_text("\"kind\":\"avoid\",\"id\":" + str(a.id, where), {&a.area}, false, frame, where);
     sep = ",\n";
   }
   return out + "\n]}\n";

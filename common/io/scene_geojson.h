@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/io/output_frame.h"
 #include "common/scene/scene.h"
 #include "common/core/error.h"
 
@@ -45,7 +46,9 @@ struct SceneReadOptions {
 Scene read_scene_geojson(const std::string& text, const SceneReadOptions& options = {});
 // Throws std::invalid_argument when the scene holds what the reader refuses (a
 // non-finite number, an object without elements, text that is not UTF-8).
-std::string write_scene_geojson(const Scene& scene);
+// In another frame than the map's (WGS 84 for GIS tools), the file is an export only:
+// the reader takes map-frame metres.
+std::string write_scene_geojson(const Scene& scene, const OutputFrame& frame = {});
 
 // The semantic table as a JSON array of {"tag", "class", "description"} (description
 // optional), e.g. maps/example-room.tags.json. Tags unique, classes is_tag_class().

@@ -133,15 +133,17 @@ OccupancyGrid rasterize_map(const Map& map, double resolution) {
   return g;
 }
 
-std::string write_pgm(const OccupancyGrid& g) {
-  std::string s = "P5\n" + std::to_string(g.width) + " " + std::to_string(g.height) + "\n255\n";
-  const size_t header = s.size();
-  s.resize(header + static_cast<size_t>(g.width) * g.height);
+std::string pgm_raster(const OccupancyGrid& g) {
+  std::string s(static_cast<size_t>(g.width) * g.height, '\0');
   for (int row = 0; row < g.height; ++row) {
-    const size_t line = header + static_cast<size_t>(g.height - 1 - row) * g.width;  // top line = max y
+    const size_t line = static_cast<size_t>(g.height - 1 - row) * g.width;  // top line = max y
     for (int col = 0; col < g.width; ++col) s[line + col] = static_cast<char>(pixel(g.at(col, row)));
   }
   return s;
+}
+
+std::string write_pgm(const OccupancyGrid& g) {
+  return "P5\n" + std::to_string(g.width) + " " + std::to_string(g.height) + "\n255\n" + pgm_raster(g);
 }
 
 std::string write_nav2_yaml(const OccupancyGrid& g, const std::string& image_file_name) {

@@ -64,6 +64,8 @@ OccupancyGrid rasterize_map(const Map& map, double resolution);
 // Binary PGM (P5, maxval 255), row 0 of the image at the top (max y), as map_server
 // reads it: occupied 0 (black), free 254, unknown 205, as Nav2's map_saver writes them.
 std::string write_pgm(const OccupancyGrid& grid);
+// The PGM's pixels alone, line by line from the top (for other image formats).
+std::string pgm_raster(const OccupancyGrid& grid);
 
 // map_server's YAML for that image: mode trinary, the image's resolution and origin.
 // free_thresh is 0.196, not the 0.25 of Nav2's map_saver before Nav2 PR #5278: with 0.25

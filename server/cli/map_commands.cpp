@@ -11,8 +11,6 @@
 
 #include "common/gis/geo_transform.h"
 #include "common/io/amrl_import.h"
-#include "common/io/map_geojson.h"
-#include "common/io/map_svg.h"
 #include "common/map/map_validation.h"
 #include "common/map/map_window.h"
 #include "common/io/seed_format.h"
@@ -22,6 +20,7 @@
 #include "common/core/error.h"
 #include "server/cli/command.h"
 #include "server/cli/georef_command.h"
+#include "server/cli/map_export_command.h"
 #include "server/cli/map_source.h"
 
 namespace fleetmap {
@@ -133,53 +132,6 @@ void add_map_import(CLI::App& map, CliContext& ctx) {
   cmd->add_flag("--replace", a->replace, "replace a map of the same name");
   add_read_options(cmd, a->read);
   run_with(*cmd, a, ctx, run_map_import);
-}
-
-// map export NAME: seed text, GeoJSON or SVG (with the robots' trajectories).
-struct MapExportArgs {
-  std::string name, format = "seed", out, since;
-  bool trajectories = false;
-};
-
-int run_map_export(const MapExportArgs& a, CliContext& ctx) {
-  MapStore store(ctx.connection());
-  const Map m = store.load(a.name);
-  std::string text;
-  if (a.format == "seed") text = write_seed(m);
-  else if (a.format == "geojson") text = write_geojson(m, a.name);
-  else {
-    SvgOptions so;
-    so.title = a.name;
-    if (a.trajectories) {
-      FleetStore fleet(ctx.connection());
-      for (const RobotStatus& r : fleet.status()) {
-        if (r.map != a.name) continue;
-        SvgTrack t;
-        t.label = r.name;
-        std::optional<std::string> from;
-        if (!a.since.empty()) from = a.since;
-        for (const TrajectoryPoint& p : fleet.trajectory(r.name, from)) t.points.push_back({p.x, p.y});
-        if (!t.points.empty()) so.tracks.push_back(std::move(t));
-      }
-    }
-    text = write_svg(m, so);
-  }
-  write_output(text, a.out);
-  return exit_code::kOk;
-}
-
-void add_map_export(CLI::App& map, CliContext& ctx) {
-  auto a = std::make_shared<MapExportArgs>();
-  auto* cmd = map.add_subcommand("export", "write a stored map as seed text, GeoJSON or SVG");
-  cmd->add_flag("--trajectories", a->trajectories, "svg: draw the trajectories of the map's robots");
-  cmd->add_option("--since", a->since, "with --trajectories: only poses since this timestamp or age (10m, 2h)")
-      ->type_name("TIME|AGE");
-  cmd->add_option("NAME", a->name, "map name")->required();
-  cmd->add_option("--format", a->format, "seed, geojson or svg")
-      ->check(CLI::IsMember({"seed", "geojson", "svg"}))
-      ->capture_default_str();
-  cmd->add_option("-o,--output", a->out, "output file (default: standard output)");
-  run_with(*cmd, a, ctx, run_map_export);
 }
 
 // map list

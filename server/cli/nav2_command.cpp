@@ -1,12 +1,15 @@
 #include "server/cli/nav2_command.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "common/gis/geo_transform.h"
+#include "common/gis/grid_png.h"
 #include "common/slicing/map_slice.h"
 #include "common/slicing/occupancy_grid.h"
 #include "common/slicing/scene_laser.h"
@@ -43,15 +46,32 @@ std::string keepout_yaml(const OccupancyGrid& mask, const std::string& image) {
   return yaml.replace(at, trinary.size(), "mode: scale");
 }
 
-void write_pair(const OccupancyGrid& grid, const std::string& base, bool keepout) {
-  const std::string pgm = base + ".pgm", yaml = base + ".yaml";
-  write_output(write_pgm(grid), pgm);
-  write_output(keepout ? keepout_yaml(grid, file_name(pgm)) : write_nav2_yaml(grid, file_name(pgm)), yaml);
+// Writes BASE.pgm or BASE.png (+ its world file) and BASE.yaml; returns the image's size.
+uintmax_t write_pair(const OccupancyGrid& grid, const std::string& base, bool keepout, const std::string& image,
+                     const std::string& crs_wkt) {
+  const std::string file = base + "." + image, yaml = base + ".yaml";
+  uintmax_t bytes = 0;
+  if (image == "png") {
+    bytes = write_grid_png(grid, file, crs_wkt);
+  } else {
+    const std::string pgm = write_pgm(grid);
+    write_output(pgm, file);
+    bytes = pgm.size();
+  }
+  write_output(keepout ? keepout_yaml(grid, file_name(file)) : write_nav2_yaml(grid, file_name(file)), yaml);
+  return bytes;
+}
+
+// The CRS of the map frame for GIS tools beside a PNG: the base CRS when the map frame is
+// it; else none (a rotated or offset frame is no CRS a world file can name).
+std::string frame_crs_wkt(const std::optional<MapGeoref>& g) {
+  if (!g || !g->frame_is_crs()) return "";
+  return GeoTransform(*g).base_wkt();
 }
 
 // map nav2 NAME (--robot R | --laser-height H) -o PREFIX
 struct MapNav2Args {
-  std::string name, robot, out;
+  std::string name, robot, out, image = "pgm";
   std::optional<double> height;
   double resolution = 0.05;
 };
@@ -59,7 +79,9 @@ struct MapNav2Args {
 int run_map_nav2(const MapNav2Args& a, CliContext& ctx) {
   if (a.robot.empty() == !a.height) throw BadInput("expected --robot R or --laser-height H (one of them)");
   const double hL = a.height ? *a.height : robot_laser_height(ctx.connection(), a.robot);
-  const Map map = MapStore(ctx.connection()).load(a.name);
+  MapStore store(ctx.connection());
+  const Map map = store.load(a.name);
+  const std::string crs_wkt = a.image == "png" ? frame_crs_wkt(store.info(a.name).georef) : "";
   const Scene scene = SceneStore(ctx.connection()).load(a.name);
   // The grid: what stops the laser at hL, walls and objects (as `map slice --format pgm`).
   const Map seen = with_objects_at_height(map, scene, hL);
@@ -70,15 +92,15 @@ int run_map_nav2(const MapNav2Args& a, CliContext& ctx) {
   OccupancyGrid mask = grid;
   std::fill(mask.cells.begin(), mask.cells.end(), OccupancyGrid::kFree);
   for (const AvoidedArea& area : scene.avoided) fill_polygon(mask, area.area, OccupancyGrid::kOccupied);
-  write_pair(grid, a.out, false);
-  write_pair(mask, a.out + "_keepout", true);
+  const uintmax_t grid_bytes = write_pair(grid, a.out, false, a.image, crs_wkt);
+  const uintmax_t mask_bytes = write_pair(mask, a.out + "_keepout", true, a.image, crs_wkt);
   size_t keepout_cells = 0;
   for (uint8_t c : mask.cells) keepout_cells += c == OccupancyGrid::kOccupied;
   const std::string robot = a.robot.empty() ? "" : " (robot " + a.robot + ")";
   std::fprintf(stderr, "nav2 files of '%s' at hL %g m%s: %d x %d cells of %g m, %zu avoided areas (%zu cells): "
-               "%s.pgm/.yaml, %s_keepout.pgm/.yaml\n",
+               "%s.%s/.yaml (%ju bytes), %s_keepout.%s/.yaml (%ju bytes)\n",
                a.name.c_str(), hL, robot.c_str(), grid.width, grid.height, a.resolution, scene.avoided.size(),
-               keepout_cells, a.out.c_str(), a.out.c_str());
+               keepout_cells, a.out.c_str(), a.image.c_str(), grid_bytes, a.out.c_str(), a.image.c_str(), mask_bytes);
   return exit_code::kOk;
 }
 
@@ -100,6 +122,11 @@ void add_nav2_command(CLI::App& app, CliContext& ctx) {
   height->excludes(robot);
   cmd->add_option("-o,--output", a->out, "PREFIX of PREFIX.pgm, PREFIX.yaml, PREFIX_keepout.pgm, PREFIX_keepout.yaml")
       ->required();
+  cmd->add_option("--image", a->image,
+                  "pgm, or png (GDAL's PNG driver, far smaller; with a world file .pgw, and the CRS in .png.aux.xml "
+                  "when the map frame is its base CRS)")
+      ->check(CLI::IsMember({"pgm", "png"}))
+      ->capture_default_str();
   cmd->add_option("--resolution", a->resolution, "metres per cell")->capture_default_str()->check(CLI::PositiveNumber);
   run_with(*cmd, a, ctx, run_map_nav2);
 }

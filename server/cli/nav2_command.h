@@ -8,7 +8,11 @@
 //                                             areas, black (occupied = keep out), on the
 //                                             same cells as the grid
 //
-//   fleetmap map nav2 NAME (--robot R | --laser-height H) -o PREFIX [--resolution R]
+//   fleetmap map nav2 NAME (--robot R | --laser-height H) -o PREFIX [--resolution R] [--image pgm|png]
+//
+// --image png writes PREFIX.png and PREFIX_keepout.png instead (the same pixels, GDAL's
+// PNG driver; map_server loads PNG through the YAML's image: key), each with a world
+// file (.pgw) that places it in the map frame for GIS tools (common/gis/grid_png.h).
 //
 // --robot reads the robot's profile (robots.laser_height; NULL: kDefaultLaserHeight, the
 // laser height of the seed's robot class; the server sends such a robot the unsliced map).

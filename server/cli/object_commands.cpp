@@ -9,6 +9,7 @@
 
 #include "common/geometry/number_format.h"
 #include "common/io/scene_geojson.h"
+#include "server/cli/gis_export.h"
 #include "protocol/map_store.h"
 #include "protocol/scene_store.h"
 #include "app/exit_codes.h"
@@ -87,23 +88,35 @@ void add_objects_import(CLI::App& objects, CliContext& ctx) {
   run_with(*cmd, a, ctx, run_objects_import);
 }
 
-// objects export MAP [-o FILE]
+// objects export MAP [--format geojson|gpkg|fgb|DRIVER] [--crs map|wgs84|base] [-o FILE]
 struct ObjectsExportArgs {
-  std::string map, out;
+  std::string map, out, format = "geojson";
+  GisExportArgs gis;
 };
 
 int run_objects_export(const ObjectsExportArgs& a, CliContext& ctx) {
-  write_output(write_scene_geojson(SceneStore(ctx.connection()).load(a.map)), a.out);
+  const MapInfo info = MapStore(ctx.connection()).info(a.map);
+  const Scene scene = SceneStore(ctx.connection()).load(a.map);
+  if (a.format == "geojson") {
+    write_output(write_scene_geojson(scene, geojson_frame(a.gis, a.map, info.georef)), a.out);
+  } else {
+    OgrExport e(a.out, ogr_export_options(a.gis, a.format, a.out, a.map, info.georef));
+    e.add_scene(scene);
+    finish_ogr_export(e, a.out);
+  }
   return exit_code::kOk;
 }
 
 void add_objects_export(CLI::App& objects, CliContext& ctx) {
   auto a = std::make_shared<ObjectsExportArgs>();
   auto* cmd = objects.add_subcommand(
-      "export", "write a map's imported objects, avoided areas and bounds as GeoJSON (what import reads; "
-                "robots' observations are not part of it)");
+      "export", "write a map's imported objects, avoided areas and bounds as GeoJSON (with --crs map: what import "
+                "reads) or GIS layers (robots' observations are not part of it)");
   cmd->add_option("MAP", a->map, "name of a stored map")->required();
-  cmd->add_option("-o,--output", a->out, "output file (default: standard output)");
+  cmd->add_option("--format", a->format, "geojson, gpkg, fgb or a GDAL vector driver's short name")
+      ->capture_default_str();
+  cmd->add_option("-o,--output", a->out, "output file (default: standard output; GDAL formats need one)");
+  add_gis_export_options(cmd, a->gis);
   run_with(*cmd, a, ctx, run_objects_export);
 }
 

@@ -11,12 +11,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "common/io/trajectory_geojson.h"
 #include "protocol/fleet_store.h"
+#include "protocol/map_store.h"
 #include "app/exit_codes.h"
 #include "app/password_file.h"
 #include "common/core/error.h"
 #include "server/cli/command.h"
+#include "server/cli/gis_export.h"
 #include "server/cli/goal_near_command.h"
+#include "server/cli/map_source.h"
 
 namespace fleetmap {
 namespace {
@@ -339,43 +343,59 @@ void add_tasks(CLI::App& app, CliContext& ctx) {
   run_with(*cmd, a, ctx, run_tasks);
 }
 
-// trajectory ROBOT [--since T] [--format csv|geojson]: the robot's reported poses.
+// trajectory ROBOT [--since T] [--format csv|geojson|gpkg|fgb|DRIVER] [--crs ..] [-o FILE]:
+// the robot's reported poses, times in ISO 8601 UTC.
 struct TrajectoryArgs {
-  std::string robot, since, format = "csv";
+  std::string robot, since, format = "csv", out;
+  GisExportArgs gis;
 };
 
 int run_trajectory(const TrajectoryArgs& a, CliContext& ctx) {
   std::optional<std::string> s;
   if (!a.since.empty()) s = a.since;
-  const auto pts = FleetStore(ctx.connection()).trajectory(a.robot, s);
+  FleetStore fleet(ctx.connection());
+  const Track track = load_track(fleet, a.robot, s);
   if (a.format == "csv") {
-    std::printf("t,x,y,theta,v\n");
-    for (const auto& p : pts) std::printf("%s,%.17g,%.17g,%.17g,%.17g\n", p.t.c_str(), p.x, p.y, p.theta, p.v);
-  } else {
-    nlohmann::json coords = nlohmann::json::array(), times = nlohmann::json::array();
-    for (const auto& p : pts) {
-      coords.push_back({p.x, p.y});
-      times.push_back(p.t);
+    std::string text = "t,x,y,theta,v\n";
+    char line[160];
+    for (const TrackPose& p : track.poses) {
+      std::snprintf(line, sizeof line, ",%.17g,%.17g,%.17g,%.17g\n", p.pos.x, p.pos.y, p.theta, p.v);
+      text += p.t + line;
     }
-    nlohmann::json f = {{"type", "Feature"},
-                        {"geometry", {{"type", "LineString"}, {"coordinates", coords}}},
-                        {"properties", {{"robot", a.robot}, {"times", times}, {"frame", "map"}}}};
-    std::cout << nlohmann::json{{"type", "FeatureCollection"}, {"features", {f}}}.dump() << "\n";
+    write_output(text, a.out);
+    return exit_code::kOk;
+  }
+  // The frame is the robot's map's: its georeference gives WGS 84.
+  std::string map;
+  for (const RobotStatus& r : fleet.status())
+    if (r.name == a.robot) map = r.map;
+  const MapInfo info = MapStore(ctx.connection()).info(map);
+  if (a.format == "geojson") {
+    write_output(write_trajectory_geojson({track}, map, geojson_frame(a.gis, map, info.georef)), a.out);
+  } else {
+    OgrExport e(a.out, ogr_export_options(a.gis, a.format, a.out, map, info.georef));
+    e.add_tracks({track});
+    finish_ogr_export(e, a.out);
   }
   return exit_code::kOk;
 }
 
 void add_trajectory(CLI::App& app, CliContext& ctx) {
   auto a = std::make_shared<TrajectoryArgs>();
-  auto* cmd = app.add_subcommand("trajectory", "a robot's reported poses");
+  auto* cmd = app.add_subcommand("trajectory", "a robot's reported poses (times in ISO 8601, UTC)");
   cmd->add_option("ROBOT", a->robot, "robot name")->required();
-  cmd->add_option("--since", a->since, "a timestamp ('2026-11-28 07:00:00') or an age (90s, 10m, 2h, 1d)")
+  cmd->add_option("--since", a->since, "a timestamp ('2026-11-28 07:00:00', the database session's time zone) or an "
+                                       "age (90s, 10m, 2h, 1d)")
       ->type_name("TIME|AGE")
       ->check([](const std::string& s) {
         static const std::regex kForm(R"(^(\d+[smhd]|\d{4}-\d{2}-\d{2}( \d{2}:\d{2}(:\d{2}(\.\d{1,6})?)?)?)$)");
         return std::regex_match(s, kForm) ? std::string() : "expected a timestamp or an age like 10m, got '" + s + "'";
       });
-  cmd->add_option("--format", a->format, "csv or geojson")->check(CLI::IsMember({"csv", "geojson"}))->capture_default_str();
+  cmd->add_option("--format", a->format,
+                  "csv, geojson (points with t, theta, v), gpkg, fgb or a GDAL vector driver's short name")
+      ->capture_default_str();
+  cmd->add_option("-o,--output", a->out, "output file (default: standard output; GDAL formats need one)");
+  add_gis_export_options(cmd, a->gis);
   run_with(*cmd, a, ctx, run_trajectory);
 }
 

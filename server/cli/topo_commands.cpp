@@ -9,6 +9,7 @@
 
 #include "common/geometry/number_format.h"
 #include "common/io/topo_geojson.h"
+#include "server/cli/gis_export.h"
 #include "common/io/topo_json.h"
 #include "protocol/map_store.h"
 #include "protocol/topo_store.h"
@@ -144,25 +145,38 @@ void add_topo_route(CLI::App& topo, CliContext& ctx) {
   run_with(*cmd, a, ctx, run_topo_route);
 }
 
-// topo export MAP [--format json|geojson] [-o FILE]
+// topo export MAP [--format json|geojson|gpkg|fgb|DRIVER] [--crs map|wgs84|base] [-o FILE]
 struct TopoExportArgs {
   std::string map, format = "json", out;
+  GisExportArgs gis;
 };
 
 int run_topo_export(const TopoExportArgs& a, CliContext& ctx) {
   const TopoGraph g = TopoStore(ctx.connection()).load(a.map);
-  write_output(a.format == "json" ? write_topo_json(g) : write_topo_geojson(g, a.map), a.out);
+  if (a.format == "json") {
+    write_output(write_topo_json(g), a.out);
+    return exit_code::kOk;
+  }
+  const MapInfo info = MapStore(ctx.connection()).info(a.map);
+  if (a.format == "geojson") {
+    write_output(write_topo_geojson(g, a.map, geojson_frame(a.gis, a.map, info.georef)), a.out);
+  } else {
+    OgrExport e(a.out, ogr_export_options(a.gis, a.format, a.out, a.map, info.georef));
+    e.add_topology(g);
+    finish_ogr_export(e, a.out);
+  }
   return exit_code::kOk;
 }
 
 void add_topo_export(CLI::App& topo, CliContext& ctx) {
   auto a = std::make_shared<TopoExportArgs>();
-  auto* cmd = topo.add_subcommand("export", "write a stored graph as navigation JSON or GeoJSON");
+  auto* cmd = topo.add_subcommand("export", "write a stored graph as navigation JSON, GeoJSON or GIS layers");
   cmd->add_option("MAP", a->map, "name of a stored map with a graph")->required();
-  cmd->add_option("--format", a->format, "json (the import format) or geojson")
-      ->check(CLI::IsMember({"json", "geojson"}))
+  cmd->add_option("--format", a->format,
+                  "json (the import format, map frame), geojson, gpkg, fgb or a GDAL vector driver's short name")
       ->capture_default_str();
-  cmd->add_option("-o,--output", a->out, "output file (default: standard output)");
+  cmd->add_option("-o,--output", a->out, "output file (default: standard output; GDAL formats need one)");
+  add_gis_export_options(cmd, a->gis);
   run_with(*cmd, a, ctx, run_topo_export);
 }
 

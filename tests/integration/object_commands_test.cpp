@@ -120,17 +120,21 @@ TEST_F(ObjectCommands, ImportRefusesExistingKeysAndMalformedFilesAndStoresNothin
 TEST_F(ObjectCommands, ExportImportExportIsTheSameFile) {
   ensure_map(kCopy);
   const std::string first = temp_path("oc_first.geojson"), second = temp_path("oc_second.geojson");
-  RunResult r = run("fleetmap", "objects export " + kRoom + " -o " + first);
+  RunResult r = run("fleetmap", "objects export " + kRoom + " --crs map -o " + first);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   r = run("fleetmap", "objects import " + kCopy + " " + first + " --replace");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  r = run("fleetmap", "objects export " + kCopy + " -o " + second);
+  r = run("fleetmap", "objects export " + kCopy + " --crs map -o " + second);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(read_file(second), read_file(first));
   // And the scene is the example's.
   EXPECT_EQ(read_scene_geojson(read_file(first)), read_scene_geojson(read_file(example())));
-  r = run("fleetmap", "objects export " + kRoom);
+  r = run("fleetmap", "objects export " + kRoom + " --crs map");
   EXPECT_EQ(r.out, read_file(first));
+  // A map without a georeference has no WGS 84, which GeoJSON holds without --crs map.
+  r = run("fleetmap", "objects export " + kRoom);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--crs map"), std::string::npos) << r.err;
   EXPECT_EQ(run("fleetmap", "objects export oc_no_map").exit_code, 4);
 }
 
@@ -188,7 +192,7 @@ TEST_F(ObjectCommands, AvoidAndTags) {
   r = run("fleetmap", "avoid list " + kRoom);
   EXPECT_NE(r.out.find("oc-a\tPOLYGON((6 6,7 6,7 7,6 7,6 6))\n"), std::string::npos) << r.out;
   // The example's areas are part of the export, the added one too.
-  EXPECT_NE(run("fleetmap", "objects export " + kRoom).out.find("\"oc-a\""), std::string::npos);
+  EXPECT_NE(run("fleetmap", "objects export " + kRoom + " --crs map").out.find("\"oc-a\""), std::string::npos);
 
   r = run("fleetmap", "tags list");
   EXPECT_NE(r.out.find("door\tlandmark\t"), std::string::npos) << r.out;

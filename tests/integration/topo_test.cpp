@@ -330,7 +330,7 @@ TEST(TopoExport, JsonIsTheImportedFileAndGeoJsonHasEveryFeature) {
     EXPECT_EQ(r.out, read_file(real_map(rg.navigation)));  // byte for byte
 
     const std::string out = temp_path("topo.geojson");
-    r = run("fleetmap", "topo export " + std::string(rg.name) + " --format geojson -o " + out);
+    r = run("fleetmap", "topo export " + std::string(rg.name) + " --format geojson --crs map -o " + out);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto j = nlohmann::json::parse(read_file(out));
     const RefGraph ref = parse_ref(rg.navigation);
