@@ -21,6 +21,7 @@
 #include "app/exit_codes.h"
 #include "common/core/error.h"
 #include "server/cli/command.h"
+#include "server/cli/gis_publish.h"
 #include "server/cli/map_source.h"
 
 namespace fleetmap {
@@ -121,6 +122,7 @@ int run_map_import(const MapImportArgs& a, CliContext& ctx) {
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("imported '%s': %zu obstacles, %zu segments in %.2f s (%.0f segments/s)\n", a.name.c_str(),
               m.obstacles.size(), m.segment_count(), s, m.segment_count() / std::max(s, 1e-9));
+  publish_gis_layers(ctx.connection(), a.name);
   return exit_code::kOk;
 }
 
@@ -209,6 +211,7 @@ struct MapDeleteArgs {
 int run_map_delete(const MapDeleteArgs& a, CliContext& ctx) {
   MapStore store(ctx.connection());
   if (!store.remove(a.name)) throw MapNotFound(a.name);
+  withdraw_gis_layers(ctx.connection());
   std::printf("deleted '%s'\n", a.name.c_str());
   return exit_code::kOk;
 }
@@ -239,6 +242,7 @@ int run_map_georef(const MapGeorefArgs& a, CliContext& ctx) {
     GeoTransform check(g);  // throws BadInput when PROJ cannot use it
     store.set_georef(a.name, g);
   }
+  publish_gis_layers(ctx.connection(), a.name);
   std::printf("map '%s' %s\n", a.name.c_str(), a.clear ? "is no longer georeferenced" : "georeferenced");
   return exit_code::kOk;
 }
