@@ -159,7 +159,7 @@ void GisLayers::publish(const std::string& name, const std::string& crs_wkt) {
             " FROM segments s STRAIGHT_JOIN obstacles o ON o.map_id = s.map_id AND o.ord = s.obstacle_ord"
             " WHERE s.map_id = " + id);
 
-  // Obstacles as one ring or one line through their segments' start points (consecutive
+  // Closed obstacles as the ring through their segments' start points (consecutive
   // segments share an end, seed 000 section 3), in the map's orientation. FID = ord + 1.
   const std::string points = "GROUP_CONCAT(CONCAT(s.ax, ' ', s.ay) ORDER BY s.ord SEPARATOR ',')";
   const std::string obstacle_columns =
@@ -174,12 +174,12 @@ void GisLayers::publish(const std::string& name, const std::string& crs_wkt) {
         "SELECT o.ord + 1, o.obstacle_id, o.ord, o.st, o.semantic, COUNT(*), MIN(s.h), MAX(s.h), "
         "ST_GeomFromText(CONCAT('POLYGON((', " + points + ", ',', SUBSTRING_INDEX(" + points + ", ',', 1), '))'), " +
             S + ")" + obstacle_from + " GROUP BY o.ord HAVING " + closed);
-  stage(layers, "LINESTRING", srid, table("open_obstacles"), obstacle_columns + "geom LINESTRING NOT NULL",
+  // Open obstacles as one part per segment: a stairs' steps are parallel segments, not
+  // a chain (SPEC 3, ST=5), and one geometry type per layer.
+  stage(layers, "MULTILINESTRING", srid, table("open_obstacles"), obstacle_columns + "geom MULTILINESTRING NOT NULL",
         "SELECT o.ord + 1, o.obstacle_id, o.ord, o.st, o.semantic, COUNT(*), MIN(s.h), MAX(s.h), "
-        "ST_GeomFromText(CONCAT('LINESTRING(', " + points + ", ',', SUBSTRING_INDEX(GROUP_CONCAT(CONCAT(s.bx, ' ', s.`by`) "
-        "ORDER BY s.ord SEPARATOR ','), ',', -1), ')'), " + S + ")" + obstacle_from + " GROUP BY o.ord HAVING NOT " +
-            closed);
-
+        "ST_GeomFromText(CONCAT('MULTILINESTRING(', GROUP_CONCAT(CONCAT('(', s.ax, ' ', s.ay, ',', s.bx, ' ', s.`by`, ')') "
+        "ORDER BY s.ord SEPARATOR ','), ')'), " + S + ")" + obstacle_from + " GROUP BY o.ord HAVING NOT " + closed);
   stage(layers, "POLYGON", srid, table("border"),
         "fid BIGINT UNSIGNED NOT NULL PRIMARY KEY, name VARCHAR(64) NOT NULL, source VARCHAR(255) NOT NULL, "
         "obstacles INT UNSIGNED NOT NULL, segments INT UNSIGNED NOT NULL, imported_at VARCHAR(32) NOT NULL, "

@@ -11,7 +11,7 @@
 // is gone. DDL commits implicitly: call these outside any transaction.
 //
 //   per map  "<map>:segments" LINESTRING, ":obstacles" POLYGON (closed shape types),
-//            ":open_obstacles" LINESTRING, ":border" POLYGON, ":bounds" POLYGON,
+//            ":open_obstacles" MULTILINESTRING, ":border" POLYGON, ":bounds" POLYGON,
 //            ":objects" POLYGON (one feature per element), ":avoided_areas" POLYGON,
 //            ":robots" POINT (last positions), ":trajectories" POINT
 //            ("#<id>:..." when "<map>:<layer>" exceeds MariaDB's 64 characters)
