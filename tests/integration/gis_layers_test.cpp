@@ -409,9 +409,18 @@ TEST_F(GisLayersTest, RobotsAndGpsFixesAreLayersRobotsCannotRead) {
              ", NOW(6), 49.2612345, -123.2456789)")
         .execute();
   }
-  // A georef --clear republishes the map, robots and GPS fixes included.
-  RunResult r = run("fleetmap", "map georef " + kRoom + " --clear");
+  // The layers are a snapshot: 'gis publish' refreshes them, robots and GPS fixes included.
+  RunResult r = run("fleetmap", "gis publish " + kRoom);
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("published '" + kRoom + "'"), std::string::npos) << r.out;
+  r = run("fleetmap", "gis list");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find(layer(kRoom, "robots") + "\tPOINT\t" +
+                       std::to_string(GisLayers::map_srid(static_cast<unsigned>(map_id(kRoom))))),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("gps_fixes\tPOINT\t4326"), std::string::npos) << r.out;
+  EXPECT_EQ(run("fleetmap", "gis publish no-such-map").exit_code, 4);
 
   const std::string robots = shell("ogrinfo -ro " + connection() + " '" + layer(kRoom, "robots") + "' -fid " +
                                    std::to_string(rid));
