@@ -4,6 +4,7 @@
 
 #include "app/cli_context.h"
 #include "app/run_program.h"
+#include "server/cli/gis_commands.h"
 #include "server/cli/map_commands.h"
 #include "server/cli/nav2_command.h"
 #include "server/cli/object_commands.h"
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
   add_scan_command(app, ctx);
   add_topo_commands(app, ctx);
   add_object_commands(app, ctx);
+  add_gis_commands(app, ctx);
   // The command's callback runs inside parse and leaves its exit code in ctx.
   return run_program("fleetmap", app, argc, argv, [&ctx] { return ctx.exit_code(); });
 }

@@ -17,6 +17,7 @@
 #include "protocol/georef_store.h"
 #include "protocol/map_store.h"
 #include "server/cli/command.h"
+#include "server/cli/gis_publish.h"
 
 namespace fleetmap {
 namespace {
@@ -137,6 +138,7 @@ int fit(const MapGeorefArgs& a, CliContext& ctx) {
     std::fprintf(stderr, "warning: scale %.6g kept (--allow-scale)\n", f.scale);
   }
   GeorefStore(ctx.connection()).set_fitted(a.name, f.georef, stored);
+  publish_gis_layers(ctx.connection(), a.name);
   std::printf("map '%s' georeferenced by %zu control points\n", a.name.c_str(), cps.size());
   return exit_code::kOk;
 }
@@ -154,6 +156,7 @@ int run_map_georef(const MapGeorefArgs& a, CliContext& ctx) {
   MapStore store(ctx.connection());
   if (a.clear) {
     store.set_georef(a.name, std::nullopt);
+    publish_gis_layers(ctx.connection(), a.name);
     std::printf("map '%s' is no longer georeferenced\n", a.name.c_str());
     return exit_code::kOk;
   }
@@ -174,6 +177,7 @@ int run_map_georef(const MapGeorefArgs& a, CliContext& ctx) {
   }
   const GeoTransform check(g);  // throws BadInput when PROJ cannot use it
   store.set_georef(a.name, g);
+  publish_gis_layers(ctx.connection(), a.name);
   std::printf("map '%s' georeferenced\n", a.name.c_str());
   return exit_code::kOk;
 }

@@ -21,6 +21,7 @@
 #include "server/cli/command.h"
 #include "server/cli/georef_command.h"
 #include "server/cli/map_export_command.h"
+#include "server/cli/gis_publish.h"
 #include "server/cli/map_source.h"
 
 namespace fleetmap {
@@ -121,6 +122,7 @@ int run_map_import(const MapImportArgs& a, CliContext& ctx) {
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("imported '%s': %zu obstacles, %zu segments in %.2f s (%.0f segments/s)\n", a.name.c_str(),
               m.obstacles.size(), m.segment_count(), s, m.segment_count() / std::max(s, 1e-9));
+  publish_gis_layers(ctx.connection(), a.name);
   return exit_code::kOk;
 }
 
@@ -162,6 +164,7 @@ struct MapDeleteArgs {
 int run_map_delete(const MapDeleteArgs& a, CliContext& ctx) {
   MapStore store(ctx.connection());
   if (!store.remove(a.name)) throw MapNotFound(a.name);
+  withdraw_gis_layers(ctx.connection());
   std::printf("deleted '%s'\n", a.name.c_str());
   return exit_code::kOk;
 }

@@ -15,6 +15,7 @@
 #include "app/exit_codes.h"
 #include "common/core/error.h"
 #include "server/cli/command.h"
+#include "server/cli/gis_publish.h"
 #include "server/cli/map_source.h"
 
 namespace fleetmap {
@@ -70,6 +71,7 @@ int run_objects_import(const ObjectsImportArgs& a, CliContext& ctx) {
   if (a.options.replace)
     std::printf("replaced: %zu objects, %zu avoided areas\n", r.replaced_objects, r.replaced_avoided);
   for (const std::string& t : r.tags_added) std::printf("tag added: %s (obstacle)\n", t.c_str());
+  publish_gis_layers(ctx.connection(), a.map);
   return exit_code::kOk;
 }
 
@@ -268,6 +270,7 @@ struct AvoidAddArgs {
 
 int run_avoid_add(const AvoidAddArgs& a, CliContext& ctx) {
   std::printf("%s\n", SceneStore(ctx.connection()).add_avoided_area(a.map, a.wkt, a.key).c_str());
+  publish_gis_layers(ctx.connection(), a.map);
   return exit_code::kOk;
 }
 
