@@ -41,12 +41,12 @@ Map map_a() {
 }
 
 // B: the same room, the wall moved down, and a solid block (counter-clockwise: free space
-// outside) at (12, 2)-(16, 6), where nothing stands.
+// outside) at (16, 1)-(18, 4), where nothing stands.
 Map map_b() {
   Map m;
   m.border = Border::from_rect({0, 0, 20, 10});
   m.obstacles.push_back(chain(1, ShapeType::OpenPolygon, {{1, 8}, {10, 8}, {19, 8}}, 2, false));
-  m.obstacles.push_back(chain(2, ShapeType::ClosedPolygon, box(12, 2, 16, 6), 1, true));
+  m.obstacles.push_back(chain(2, ShapeType::ClosedPolygon, box(16, 1, 18, 4), 1, true));
   m.compute_bounds();
   return m;
 }
@@ -102,7 +102,7 @@ class MapReplace : public ::testing::Test {
   //   robot mr_r1   last pose (5, 5), initial pose (5, 4), open task to (8, 5), a done task at (30, 30)
   //   robot mr_r2   last pose (25, 5): off the map already
   //   object mr_box (2, 2)-(3, 3); avoided areas mr_near (6, 1)-(7, 2), mr_far (12, 1)-(13, 2)
-  //   bounds (0.5, 0.5)-(19.5, 9.5); topology nodes 1 (4, 5), 2 'far' (15, 5); georeference
+  //   bounds (0.5, 0.5)-(19.5, 9.5); topology nodes 1 (3, 5), 2 'far' (15, 5); georeference
   void SetUp() override {
     auto a = admin();
     // Rows without accounts (the server test's robots have theirs, made by add_robot).
@@ -126,7 +126,7 @@ class MapReplace : public ::testing::Test {
     scene.bounds = box(0.5, 0.5, 19.5, 9.5);
     SceneStore(*op_).import(kMap, scene, {.replace = true});
     TopoGraph g;
-    g.add_node({1, {4, 5}, ""});
+    g.add_node({1, {3, 5}, ""});
     g.add_node({2, {15, 5}, "far"});
     g.add_edge({.a = 1, .b = 2});
     TopoStore(*op_).import(kMap, g, "test", true);
@@ -285,23 +285,25 @@ TEST_F(MapReplace, ImportsGeoreferenceReplacesTheKeptOne) {
 // The server caches whole maps and slices by map id; a replace keeps the id, so the
 // next Ready must bring the new map, to a robot with and to one without a laser height.
 TEST_F(MapReplace, TheServerServesTheNewMap) {
+  SceneStore(*op_).import(kMap, Scene{}, {.replace = true});  // the sliced robot's map: the segments alone
   const std::string plain_pw = add_robot("mr_plain", kMap);
   const std::string sliced_pw = add_robot("mr_sliced", kMap);
   ASSERT_EQ(run("fleetmap", "robot set mr_sliced --laser-height 0.5").exit_code, 0);
   ServerProcess server("", "mr_server.log");
   SqlRobot plain("mr_plain", plain_pw), sliced("mr_sliced", sliced_pw);
-  auto map_of = [](SqlRobot& robot) {
-    robot.send("Ready", R"({"magic": 3})");
+  int magic = 3;
+  auto map_of = [&magic](SqlRobot& robot) {
+    robot.send("Ready", "{\"magic\": " + std::to_string(++magic) + "}");
     const auto a = robot.receive(2);
-    if (a.size() != 2 || a[1].op != "SetMap" || !a[1].payload) return Map{};
-    return read_seed(*a[1].payload);
+    if (a.size() != 2 || a[1].op != "SetMap" || !a[1].payload) return std::string("no SetMap");
+    return write_seed(read_seed(*a[1].payload));
   };
-  EXPECT_EQ(map_of(plain), map_a());
-  EXPECT_EQ(map_of(sliced), slice_at_height(map_a(), 0.5));
+  EXPECT_EQ(map_of(plain), write_seed(map_a()));
+  EXPECT_EQ(map_of(sliced), write_seed(slice_at_height(map_a(), 0.5)));
   RunResult r = run("fleetmap", "map import " + seed_file("mr_b", map_b()) + " --name " + kMap + " --replace");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(map_of(plain), map_b());
-  EXPECT_EQ(map_of(sliced), slice_at_height(map_b(), 0.5));
+  EXPECT_EQ(map_of(plain), write_seed(map_b()));
+  EXPECT_EQ(map_of(sliced), write_seed(slice_at_height(map_b(), 0.5)));
   if (HasFailure()) std::cerr << "server log:\n" << read_file(temp_path("mr_server.log")).substr(0, 20000);
 }
 
