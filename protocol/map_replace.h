@@ -67,7 +67,7 @@ struct StrandedDependent {
 
 struct MapReplaceReport {
   MapDependents kept, dropped;
-  bool georef_replaced = false;             // the import brought its own georeference
+  bool georef_replaced = false;             // the import brought its own georeference (stored)
   std::vector<StrandedDependent> stranded;  // kept anyway (forced)
 };
 

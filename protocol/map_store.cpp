@@ -135,7 +135,7 @@ MapImportReport MapStore::import(const Map& m, const std::string& name, const st
     report.replaced = true;
     report.map_id = static_cast<unsigned>(to_int(existing[0][0]));
     report.replace = prepare_replace(c_, report.map_id, name, m, o.drop, o.force, [&] { return load(name); });
-    if (o.georef && report.replace.kept.georef) {
+    if (o.georef) {  // the import's own, in place of a kept one
       report.replace.kept.georef.reset();
       report.replace.georef_replaced = true;
     }
@@ -156,8 +156,8 @@ MapImportReport MapStore::import(const Map& m, const std::string& name, const st
   } else {
     q << "INSERT INTO maps (name, mx1, my1, mx4, my4, border, source, obstacles, segments) VALUES ("
       << mysqlpp::quote << name << ", " << n(m.border.mx1) << ", " << n(m.border.my1) << ", " << n(m.border.mx4)
-      << ", " << n(m.border.my4) << ", ST_GeomFromText('" << polygon_wkt(m.border.rect()) << "'), " << mysqlpp::quote << source.substr(0, 255) << ", "
-      << m.obstacles.size() << ", " << total << ")";
+      << ", " << n(m.border.my4) << ", ST_GeomFromText('" << polygon_wkt(m.border.rect()) << "'), "
+      << mysqlpp::quote << source.substr(0, 255) << ", " << m.obstacles.size() << ", " << total << ")";
     report.map_id = static_cast<unsigned>(q.execute().insert_id());
     if (o.georef) {
       q.reset();

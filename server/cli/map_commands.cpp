@@ -124,7 +124,7 @@ void print_replace_report(const MapReplaceReport& r) {
     std::printf("  %s: %s\n", label, s.empty() ? "nothing" : s.c_str());
   };
   std::vector<std::string> kept = describe(r.kept);
-  if (r.georef_replaced) kept.push_back("georeference replaced by the import's");
+  if (r.georef_replaced) kept.push_back("the import's own georeference");
   line("kept", kept);
   line("dropped", describe(r.dropped));
   if (!r.stranded.empty()) {
@@ -160,7 +160,8 @@ void add_map_import(CLI::App& map, CliContext& ctx) {
   auto* replace = cmd->add_flag("--replace", a->replace,
                                 "replace a map of the same name: it keeps its id, robots, objects, avoided areas, "
                                 "bounds, topology and georeference");
-  cmd->add_option("--drop", a->drop, "with --replace: delete these with the old map (objects, areas, bounds, topology, georef, all)")
+  cmd->add_option("--drop", a->drop,
+                  "with --replace: delete these with the old map (objects, areas, bounds, topology, georef, all)")
       ->delimiter(',')
       ->check(CLI::IsMember(std::vector<std::string>(std::begin(kMapDropWords), std::end(kMapDropWords))))
       ->type_name("WHAT,...")
