@@ -44,6 +44,7 @@ MapInfo info_from_row(const mysqlpp::Row& r) {
   i.segments = static_cast<size_t>(to_int(r[7]));
   i.source = std::string(r[8]);
   i.imported_at = std::string(r[9]);
+  i.revision = static_cast<unsigned>(to_int(r[15]));
   if (!r[10].is_null()) {
     MapGeoref g;
     g.crs = std::string(r[10]);
@@ -58,7 +59,13 @@ MapInfo info_from_row(const mysqlpp::Row& r) {
 
 constexpr const char* kInfoColumns =
     "id, name, mx1, my1, mx4, my4, obstacles, segments, source, imported_at, geo_crs, geo_tx, geo_ty, geo_rotation, "
-    "geo_scale";
+    "geo_scale, revision";
+
+// The SET list of a georeference.
+void add_geo_assignments(mysqlpp::Query& q, const MapGeoref& g) {
+  q << "geo_crs = " << mysqlpp::quote << g.crs << ", geo_tx = " << n(g.tx) << ", geo_ty = " << n(g.ty)
+    << ", geo_rotation = " << n(g.rotation) << ", geo_scale = " << n(g.scale);
+}
 
 // Segment columns in the order read_segment expects, from table alias s.
 constexpr const char* kSegmentColumns = "s.obstacle_ord, s.ax, s.ay, s.bx, s.`by`, s.h, s.in_out, s.semantic, s.note";
@@ -105,32 +112,67 @@ std::optional<std::string> check_map_name(const std::string& name) {
 
 unsigned MapStore::import(const Map& m, const std::string& name, const std::string& source, bool replace,
                           const ImportProgress& progress) {
+  MapImportOptions o;
+  o.replace = replace;
+  o.progress = progress;
+  return import(m, name, source, o).map_id;
+}
+
+MapImportReport MapStore::import(const Map& m, const std::string& name, const std::string& source,
+                                 const MapImportOptions& o) {
   if (auto e = check_map_name(name)) throw std::invalid_argument(*e);
   Transaction tx(c_);
   mysqlpp::Query q = c_.query();
   q << "SELECT id FROM maps WHERE name = " << mysqlpp::quote << name << " FOR UPDATE";
   mysqlpp::StoreQueryResult existing = q.store();
+  MapImportReport report;
+  const size_t total = m.segment_count();
+  q.reset();
   if (!existing.empty()) {
-    if (!replace) throw MapExists(name);
+    if (!o.replace) throw MapExists(name);
+    // The row stays (its id is what robots, objects, areas, bounds and the graph name);
+    // its obstacles and segments are replaced. Dependents first: a refusal changes nothing.
+    report.replaced = true;
+    report.map_id = static_cast<unsigned>(to_int(existing[0][0]));
+    report.replace = prepare_replace(c_, report.map_id, name, m, o.drop, o.force, [&] { return load(name); });
+    if (o.georef) {  // the import's own, in place of a kept one
+      report.replace.kept.georef.reset();
+      report.replace.georef_replaced = true;
+    }
+    const std::string id = std::to_string(report.map_id);
     // Segments first: one statement instead of a cascade row by row.
-    const std::string id = std::string(existing[0][0]);
     execute(c_, "DELETE FROM segments WHERE map_id = " + id);
     execute(c_, "DELETE FROM obstacles WHERE map_id = " + id);
-    execute(c_, "DELETE FROM maps WHERE id = " + id);
+    q << "UPDATE maps SET mx1 = " << n(m.border.mx1) << ", my1 = " << n(m.border.my1) << ", mx4 = " << n(m.border.mx4)
+      << ", my4 = " << n(m.border.my4) << ", border = ST_GeomFromText('" << polygon_wkt(m.border.rect())
+      << "'), source = " << mysqlpp::quote << source.substr(0, 255) << ", obstacles = " << m.obstacles.size()
+      << ", segments = " << total << ", imported_at = CURRENT_TIMESTAMP(6), revision = revision + 1";
+    if (o.georef) {
+      q << ", ";
+      add_geo_assignments(q, *o.georef);
+    }
+    q << " WHERE id = " << id;
+    q.execute();
+  } else {
+    q << "INSERT INTO maps (name, mx1, my1, mx4, my4, border, source, obstacles, segments) VALUES ("
+      << mysqlpp::quote << name << ", " << n(m.border.mx1) << ", " << n(m.border.my1) << ", " << n(m.border.mx4)
+      << ", " << n(m.border.my4) << ", ST_GeomFromText('" << polygon_wkt(m.border.rect()) << "'), "
+      << mysqlpp::quote << source.substr(0, 255) << ", " << m.obstacles.size() << ", " << total << ")";
+    report.map_id = static_cast<unsigned>(q.execute().insert_id());
+    if (o.georef) {
+      q.reset();
+      q << "UPDATE maps SET ";
+      add_geo_assignments(q, *o.georef);
+      q << " WHERE id = " << report.map_id;
+      q.execute();
+    }
   }
+  const std::string mid = std::to_string(report.map_id);
 
-  const size_t total = m.segment_count();
   // Every row below references rows inserted just before in this transaction, so the
   // per-row foreign-key lookups prove nothing; skipping them makes a large import
   // markedly faster (scripts/bench-map.sh). Restored before commit.
   SessionFlag no_fk_checks(c_, "foreign_key_checks", 0, 1);
-  q.reset();
-  q << "INSERT INTO maps (name, mx1, my1, mx4, my4, border, source, obstacles, segments) VALUES ("
-    << mysqlpp::quote << name << ", " << n(m.border.mx1) << ", " << n(m.border.my1) << ", " << n(m.border.mx4)
-    << ", " << n(m.border.my4) << ", ST_GeomFromText('" << polygon_wkt(m.border.rect()) << "'), "
-    << mysqlpp::quote << source.substr(0, 255) << ", " << m.obstacles.size() << ", " << total << ")";
-  const unsigned map_id = static_cast<unsigned>(q.execute().insert_id());
-  const std::string mid = std::to_string(map_id);
 
   // Obstacles, in batches.
   for (size_t k = 0; k < m.obstacles.size();) {
@@ -152,12 +194,12 @@ unsigned MapStore::import(const Map& m, const std::string& name, const std::stri
     q.execute();
     done += rows;
     rows = 0;
-    if (progress) progress(done, total);
+    if (o.progress) o.progress(done, total);
   };
   for (size_t k = 0; k < m.obstacles.size(); ++k) {
-    const Obstacle& o = m.obstacles[k];
-    for (size_t i = 0; i < o.segments.size(); ++i) {
-      const Segment& s = o.segments[i];
+    const Obstacle& ob = m.obstacles[k];
+    for (size_t i = 0; i < ob.segments.size(); ++i) {
+      const Segment& s = ob.segments[i];
       if (rows == 0) {
         q.reset();
         q << "INSERT INTO segments (map_id, obstacle_ord, ord, ax, ay, bx, `by`, h, in_out, semantic, note, geom) "
@@ -174,7 +216,7 @@ unsigned MapStore::import(const Map& m, const std::string& name, const std::stri
   }
   flush();
   tx.commit();
-  return map_id;
+  return report;
 }
 
 std::vector<MapInfo> MapStore::list() {
@@ -218,8 +260,28 @@ void MapStore::set_georef(const std::string& name, const std::optional<MapGeoref
   q.execute();
 }
 
-Map MapStore::load(const std::string& name) {
-  const MapInfo info = this->info(name);
+Map MapStore::load(const std::string& name) { return load(name, nullptr); }
+
+Map MapStore::load(const std::string& name, MapInfo* info_out) {
+  // Each statement reads what is committed when it runs (READ COMMITTED, protocol/
+  // connection.h), and a replace keeps the id: a replace committed between the reads
+  // would mix two maps. Every replace moves the revision, so an unchanged revision after
+  // the reads means they all saw the same import.
+  for (int attempt = 1;; ++attempt) {
+    const MapInfo info = this->info(name);
+    std::optional<Map> m = read_map(info);
+    const std::optional<MapInfo> after = this->info(info.id);
+    if (m && after && after->revision == info.revision) {
+      if (info_out) *info_out = info;
+      return std::move(*m);
+    }
+    if (!m && after && after->revision == info.revision)
+      throw DbError("segment of a missing obstacle in map '" + name + "'");
+    if (attempt == 5) throw DbError("map '" + name + "' was replaced again and again while it was read");
+  }
+}
+
+std::optional<Map> MapStore::read_map(const MapInfo& info) {
   Map m;
   m.border = info.border;
   const std::string mid = std::to_string(info.id);
@@ -235,11 +297,13 @@ Map MapStore::load(const std::string& name) {
   q.reset();
   q << "SELECT " << kSegmentColumns << " FROM segments s WHERE s.map_id = " << mid << " ORDER BY s.obstacle_ord, s.ord";
   mysqlpp::UseQueryResult res = q.use();
+  bool consistent = true;
   while (mysqlpp::Row r = res.fetch_row()) {
     const size_t k = static_cast<size_t>(to_int(r[0]));
-    if (k >= m.obstacles.size()) throw DbError("segment of a missing obstacle in map '" + name + "'");
-    m.obstacles[k].segments.push_back(read_segment(r));
+    if (k >= m.obstacles.size()) consistent = false;  // read to the end: the connection must be free again
+    else if (consistent) m.obstacles[k].segments.push_back(read_segment(r));
   }
+  if (!consistent) return std::nullopt;
   m.compute_bounds();
   return m;
 }

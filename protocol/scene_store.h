@@ -2,7 +2,8 @@
 // The semantic layer in the database (seed 002 section 3, seed 004 section II): tables tags, env_objects,
 // object_elements (footprint POLYGON, spatial index), avoided_areas (POLYGON, spatial
 // index) and map_bounds, sql/60_semantic.sql. A map's Scene (common/scene/scene.h) is found by
-// the map's name; deleting or replacing the map deletes its scene (foreign-key cascade).
+// the map's name; deleting the map deletes its scene (foreign-key cascade), replacing it
+// keeps the scene unless told otherwise (protocol/map_replace.h).
 //
 //   SceneStore store(conn);
 //   store.import("room", read_scene_geojson(text), {.replace = true});

@@ -1,8 +1,9 @@
 #pragma once
 // Topological graphs in the database (SPEC 7): tables topo_graphs, topo_nodes (POINT,
 // spatial index) and topo_edges (LINESTRING, spatial index), sql/50_topology.sql. One
-// graph per stored map, found by the map's name; deleting or replacing the map deletes
-// its graph (foreign-key cascade). Rows carry the map's name too, for the inspector
+// graph per stored map, found by the map's name; deleting the map deletes its graph
+// (foreign-key cascade), replacing it keeps the graph unless told otherwise
+// (protocol/map_replace.h). Rows carry the map's name too, for the inspector
 // views (50_topology.sql says why).
 //
 //   TopoStore store(conn);

@@ -17,6 +17,9 @@ CREATE TABLE IF NOT EXISTS maps (
   obstacles   INT UNSIGNED NOT NULL DEFAULT 0,
   segments    INT UNSIGNED NOT NULL DEFAULT 0,
   imported_at TIMESTAMP(6) NOT NULL DEFAULT CURRENT_TIMESTAMP(6),
+  -- imports under this id: 'map import --replace' keeps the row (robots, objects, graph
+  -- stay attached) and adds one; caches of the map's contents compare it
+  revision    INT UNSIGNED NOT NULL DEFAULT 1,
   -- georeference (optional, common/map/map_georef.h): the base CRS as PROJ reads it and
   -- the similarity base = (tx, ty) + scale * R(rotation) * map; SendGPS fixes and WGS 84
   -- exports go through it. All NULL or all set.

@@ -2,15 +2,16 @@
 -- with positions) and typed edges, imported from the AMRL navigation graphs with
 -- 'fleetmap topo import' (protocol/topo_store.h). Idempotent, like every file here.
 --
--- A graph belongs to one map: deleting or replacing the map (map delete, map import
--- --replace) deletes its graph through the cascade, since the positions were placed
--- on the old map. Re-import the graph afterwards.
+-- A graph belongs to one map: deleting the map (map delete) deletes its graph through
+-- the cascade. Replacing it (map import --replace) keeps the map's row and its graph,
+-- unless '--drop topology' deletes it; a node the new map strands needs --force
+-- (protocol/map_replace.h).
 --
 -- Nodes and edges carry their map's name as well as its id, so that the views below need
 -- no join: in MariaDB 10.11 a SPATIAL INDEX search that follows any other read in the
 -- same statement (the const lookup of the map by name, say) fails with error 1207
 -- "Update locks cannot be acquired during a READ UNCOMMITTED transaction" (MDEV-26123).
--- Map names never change (a replaced map is a new row, and its graph is gone).
+-- Map names never change (a replaced map keeps its row, name and id).
 
 CREATE TABLE IF NOT EXISTS topo_graphs (
   map_id      INT UNSIGNED NOT NULL PRIMARY KEY,

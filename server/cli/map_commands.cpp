@@ -7,7 +7,10 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <map>
+#include <string>
+#include <vector>
 
 #include "common/gis/geo_transform.h"
 #include "common/io/amrl_import.h"
@@ -106,22 +109,47 @@ void add_map_check(CLI::App& map, CliContext& ctx) {
   run_with(*cmd, a, ctx, run_map_check);
 }
 
-// map import FILE --name NAME: one transaction.
+// map import FILE --name NAME [--replace [--drop WHAT,...] [--force]]: one transaction.
 struct MapImportArgs {
   std::string file, name;
-  bool replace = false;
+  bool replace = false, force = false;
+  std::vector<std::string> drop;
   ReadOptions read;
 };
 
+// What a replace kept, dropped and stranded (protocol/map_replace.h).
+void print_replace_report(const MapReplaceReport& r) {
+  auto line = [](const char* label, const std::vector<std::string>& items) {
+    std::string s;
+    for (const std::string& i : items) s += (s.empty() ? "" : ", ") + i;
+    std::printf("  %s: %s\n", label, s.empty() ? "nothing" : s.c_str());
+  };
+  std::vector<std::string> kept = describe(r.kept);
+  if (r.georef_replaced) kept.push_back("the import's own georeference");
+  line("kept", kept);
+  line("dropped", describe(r.dropped));
+  if (!r.stranded.empty()) {
+    std::printf("  stranded (kept, --force): %zu\n", r.stranded.size());
+    for (const StrandedDependent& d : r.stranded) std::printf("    %s\n", d.text().c_str());
+  }
+}
+
 int run_map_import(const MapImportArgs& a, CliContext& ctx) {
   if (auto e = check_map_name(a.name)) throw BadInput(*e);
+  MapImportOptions options;
+  options.replace = a.replace;
+  options.drop = parse_map_drop(a.drop);
+  options.force = a.force;
+  options.progress = progress_printer();
   Map m = read_map_file(a.file, a.read);
   const auto t0 = std::chrono::steady_clock::now();
   MapStore store(ctx.connection());
-  store.import(m, a.name, a.file, a.replace, progress_printer());
+  const MapImportReport r = store.import(m, a.name, a.file, options);
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("imported '%s': %zu obstacles, %zu segments in %.2f s (%.0f segments/s)\n", a.name.c_str(),
-              m.obstacles.size(), m.segment_count(), s, m.segment_count() / std::max(s, 1e-9));
+  std::printf("%s '%s': %zu obstacles, %zu segments in %.2f s (%.0f segments/s)\n",
+              r.replaced ? "replaced" : "imported", a.name.c_str(), m.obstacles.size(), m.segment_count(), s,
+              m.segment_count() / std::max(s, 1e-9));
+  if (r.replaced) print_replace_report(r.replace);
   publish_gis_layers(ctx.connection(), a.name);
   return exit_code::kOk;
 }
@@ -131,7 +159,19 @@ void add_map_import(CLI::App& map, CliContext& ctx) {
   auto* cmd = map.add_subcommand("import", "import a map file (one transaction: all or nothing)");
   cmd->add_option("FILE", a->file, "map file")->required();
   cmd->add_option("--name", a->name, "map name, [A-Za-z0-9_.-]{1,64}")->required();
-  cmd->add_flag("--replace", a->replace, "replace a map of the same name");
+  auto* replace = cmd->add_flag("--replace", a->replace,
+                                "replace a map of the same name: it keeps its id, robots, objects, avoided areas, "
+                                "bounds, topology and georeference");
+  cmd->add_option("--drop", a->drop,
+                  "with --replace: delete these with the old map (objects, areas, bounds, topology, georef, all)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(std::vector<std::string>(std::begin(kMapDropWords), std::end(kMapDropWords))))
+      ->type_name("WHAT,...")
+      ->needs(replace);
+  cmd->add_flag("--force", a->force,
+                "with --replace: replace even when robots, goals, objects, areas, bounds or topology nodes would be "
+                "left outside the new border or inside a new closed obstacle")
+      ->needs(replace);
   add_read_options(cmd, a->read);
   run_with(*cmd, a, ctx, run_map_import);
 }

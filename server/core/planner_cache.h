@@ -2,9 +2,10 @@
 // One MapPlanner per map, robot profile and scene (seed 004): building the clearance index
 // costs far more than a query, so planners are kept and shared by the workers.
 //
-//   key      (map id, radius, body height, climbs stairs): a map never changes under its
-//            id (MapStore::import gives a replaced map a new id), and the profile decides
-//            what blocks (common/planning/planning_scene.h).
+//   key      (map id, radius, body height, climbs stairs): the profile decides what
+//            blocks (common/planning/planning_scene.h). A replace keeps the map's id and
+//            moves its revision (MapStore::import): a planner of an older revision is
+//            rebuilt.
 //   scene    the map's live scene as server/daemon/robot_map_source.h serves it: one Scene
 //            object per scene version (it re-reads the version cheaply and loads a new
 //            Scene only when it changed). A planner built on an older Scene object is
@@ -41,15 +42,16 @@ inline PlannerOptions server_planner_options(const PlannerProfile& profile) {
 
 class PlannerCache {
  public:
-  // The planner of the map `map_id` for the profile with the scene's objects and avoided
-  // areas; the map is loaded through store on first use. Throws std::invalid_argument
-  // for a scene the planner cannot take (a malformed footprint).
-  std::shared_ptr<const MapPlanner> get(MapCache& maps, MapStore& store, unsigned map_id, const std::string& name,
+  // The planner of the map `info` describes (id, revision) for the profile with the
+  // scene's objects and avoided areas; the map is loaded through store on first use.
+  // Throws std::invalid_argument for a scene the planner cannot take (a malformed footprint).
+  std::shared_ptr<const MapPlanner> get(MapCache& maps, MapStore& store, const MapInfo& info,
                                         const PlannerProfile& profile, const std::shared_ptr<const Scene>& scene);
 
  private:
   using Key = std::tuple<unsigned, double, double, bool>;
   struct Entry {
+    unsigned revision = 0;
     std::shared_ptr<const Scene> scene;
     std::shared_ptr<const MapPlanner> planner;
   };

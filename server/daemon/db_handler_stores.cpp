@@ -47,7 +47,7 @@ std::shared_ptr<const Scene> DbRobotMaps::scene(unsigned map_id) {
 }
 
 std::shared_ptr<const MapPlanner> DbRobotMaps::planner(const MapInfo& info, const PlannerProfile& profile) {
-  return planners_.get(cache_, store_, info.id, info.name, profile, scene(info.id));
+  return planners_.get(cache_, store_, info, profile, scene(info.id));
 }
 
 }  // namespace fleetmap

@@ -30,28 +30,31 @@ RobotMapSource& RobotMapSource::shared() {
   return source;
 }
 
-std::shared_ptr<const RobotMapSource::Indexed> RobotMapSource::slice(const Map& full, unsigned map_id,
+std::shared_ptr<const RobotMapSource::Indexed> RobotMapSource::slice(const Map& full, const MapInfo& info,
                                                                      double laser_height) {
-  const Key key{map_id, laser_height};
+  const Key key{info.id, laser_height};
   {
     std::lock_guard lock(mutex_);
-    if (auto it = slices_.find(key); it != slices_.end()) return it->second;
+    if (auto it = slices_.find(key); it != slices_.end() && it->second->revision == info.revision) return it->second;
   }
   auto s = std::make_shared<Indexed>();
+  s->revision = info.revision;
   s->obstacles = slice_at_height(full, laser_height).obstacles;  // outside the lock: O(map)
   for (const Obstacle& o : s->obstacles) s->boxes.push_back(o.box());
   std::lock_guard lock(mutex_);
   bound_size(slices_);
-  return slices_.emplace(key, std::move(s)).first->second;
+  return slices_[key] = std::move(s);
 }
 
-std::shared_ptr<const RobotMapSource::Indexed> RobotMapSource::objects(const Map& full, unsigned map_id,
+std::shared_ptr<const RobotMapSource::Indexed> RobotMapSource::objects(const Map& full, const MapInfo& info,
                                                                        double laser_height,
                                                                        const std::shared_ptr<const Scene>& scene) {
-  const Key key{map_id, laser_height};
+  const Key key{info.id, laser_height};
   {
     std::lock_guard lock(mutex_);
-    if (auto it = objects_.find(key); it != objects_.end() && it->second.scene == scene) return it->second.obstacles;
+    if (auto it = objects_.find(key); it != objects_.end() && it->second.scene == scene &&
+                                      it->second.obstacles->revision == info.revision)
+      return it->second.obstacles;
   }
   // with_objects_at_height numbers the objects' obstacles after the map's largest id; a
   // map of that one obstacle gives the same numbers as the whole map would.
@@ -64,6 +67,7 @@ std::shared_ptr<const RobotMapSource::Indexed> RobotMapSource::objects(const Map
   }
   Map seen = with_objects_at_height(stub, *scene, laser_height);
   auto out = std::make_shared<Indexed>();
+  out->revision = info.revision;
   out->obstacles.assign(std::make_move_iterator(seen.obstacles.begin() + static_cast<long>(stub.obstacles.size())),
                         std::make_move_iterator(seen.obstacles.end()));
   for (const Obstacle& o : out->obstacles) out->boxes.push_back(o.box());
@@ -104,11 +108,11 @@ void RobotMapSource::note_change(unsigned map_id) {
 
 Map RobotMapSource::map(MapStore& maps, MapCache& cache, const MapInfo& info, const std::optional<Rect>& window,
                         std::optional<double> laser_height) {
-  if (!laser_height) return window ? maps.window(info.id, *window) : *cache.get(maps, info.id, info.name);
+  if (!laser_height) return window ? maps.window(info.id, *window) : *cache.get(maps, info);
 
-  const std::shared_ptr<const Map> full = cache.get(maps, info.id, info.name);
-  const auto sliced = slice(*full, info.id, *laser_height);
-  const auto added = objects(*full, info.id, *laser_height, scene(maps.connection(), info.id));
+  const std::shared_ptr<const Map> full = cache.get(maps, info);
+  const auto sliced = slice(*full, info, *laser_height);
+  const auto added = objects(*full, info, *laser_height, scene(maps.connection(), info.id));
   Map out;
   if (!window) {
     out.border = full->border;

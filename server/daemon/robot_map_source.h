@@ -10,15 +10,17 @@
 // own ray caster reads at whatever height its laser is (SPEC 6).
 //
 // One instance per server process (shared()), used by every worker, three caches:
-//   slices   (map id, laser height) -> slice_at_height of the stored map. A replaced map
-//            gets a new id (MapStore::import), so a slice never goes stale.
+//   slices   (map id, laser height) -> slice_at_height of the stored map, at the map's
+//            revision: a replace keeps the id and moves the revision (MapStore::import),
+//            so a slice of an older revision is made again.
 //   scenes   map id -> the live scene (protocol/live_scene.h: imported objects and
 //            observations not expired), with its version text. The version is read again
 //            (one aggregate query) when it was last read more than kRecheck ago, and on
 //            every use for kAfterChange after this process recorded an observation on
 //            the map: a new import, observation or expiry reaches the robots' maps
 //            within about kRecheck, and a robot's own SetObject its next GetMap.
-//   objects  (map id, laser height, scene) -> the obstacles the scene adds at that height.
+//   objects  (map id, laser height, scene, revision) -> the obstacles the scene adds at
+//            that height (numbered after the map's largest obstacle id).
 // Loads run outside the lock, in the caller's connection and transaction.
 #include <chrono>
 #include <map>
@@ -60,6 +62,7 @@ class RobotMapSource {
 
  private:
   struct Indexed {  // obstacles with their bounding boxes, to cut windows quickly
+    unsigned revision = 0;  // of the map they were made from
     std::vector<Obstacle> obstacles;
     std::vector<Rect> boxes;
   };
@@ -74,8 +77,8 @@ class RobotMapSource {
   };
   using Key = std::pair<unsigned, double>;  // map id, laser height
 
-  std::shared_ptr<const Indexed> slice(const Map& full, unsigned map_id, double laser_height);
-  std::shared_ptr<const Indexed> objects(const Map& full, unsigned map_id, double laser_height,
+  std::shared_ptr<const Indexed> slice(const Map& full, const MapInfo& info, double laser_height);
+  std::shared_ptr<const Indexed> objects(const Map& full, const MapInfo& info, double laser_height,
                                          const std::shared_ptr<const Scene>& scene);
 
   std::mutex mutex_;

@@ -43,7 +43,7 @@ double number(const std::string& sql) {
 class GoalNear : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    RunResult r = run("fleetmap", "map import " + source_path("maps/example-room.map") + " --name gn_room --replace");
+    RunResult r = run("fleetmap", "map import " + source_path("maps/example-room.map") + " --name gn_room --replace --drop all");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     r = run("fleetmap", "objects import gn_room " + source_path("maps/example-room.geojson"));
     ASSERT_EQ(r.exit_code, 0) << r.err;

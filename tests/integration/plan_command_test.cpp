@@ -70,7 +70,7 @@ TEST(PlanCommand, NoPathAndBlockedEndsExitWith3) {
 // a file with --objects; --no-objects plans on the segments alone.
 TEST(PlanCommand, ObjectsAndAvoidedAreasBlock) {
   const std::string map = source_path("maps/example-room.map"), objects = source_path("maps/example-room.geojson");
-  ASSERT_EQ(run("fleetmap", "map import " + map + " --name it_plan_room --replace").exit_code, 0);
+  ASSERT_EQ(run("fleetmap", "map import " + map + " --name it_plan_room --replace --drop all").exit_code, 0);
   ASSERT_EQ(run("fleetmap", "objects import it_plan_room " + objects).exit_code, 0);
   // Straight through the L-shaped keep-out zone (x 2..4, y 9..12) without the scene.
   RunResult bare = run("fleetmap", "plan it_plan_room 1 10.5 5 10.5 --radius 0.25 --no-objects");

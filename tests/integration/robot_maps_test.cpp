@@ -35,8 +35,9 @@ Map expected_view(double h, const std::optional<Rect>& r) {
 class RobotMaps : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    // A fresh map every run: its scene and every earlier observation go with the old one.
-    RunResult r = run("fleetmap", "map import " + source_path("maps/example-room.map") + " --name " + kMap + " --replace");
+    // A fresh map every run: its scene and every earlier observation are dropped with the old one.
+    RunResult r = run("fleetmap", "map import " + source_path("maps/example-room.map") + " --name " + kMap +
+                                      " --replace --drop all");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     r = run("fleetmap", std::string("objects import ") + kMap + " " + source_path("maps/example-room.geojson"));
     ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -413,9 +413,16 @@ TEST(TopoImport, GraphGoesWithItsMap) {
   EXPECT_EQ(scalar("SELECT COUNT(*) FROM maps WHERE id = " + mid), 1);
   EXPECT_EQ(run("fleetmap", "topo delete " + std::string(rg.name)).exit_code, 4);
 
-  // map import --replace and map delete take the graph along (the cascade of 50_topology.sql).
+  // map import --replace keeps the graph (the map keeps its row) unless told to drop it;
+  // map delete takes it along (the cascade of 50_topology.sql).
   import_graph(rg);
   ASSERT_EQ(run("fleetmap", "map import " + real_map(rg.vectormap) + " --name " + rg.name + " --replace").exit_code, 0);
+  EXPECT_EQ(std::to_string(map_id(rg.name)), mid);
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM topo_nodes WHERE map_id = " + mid), 9);
+  EXPECT_EQ(run("fleetmap", "topo route " + std::string(rg.name) + " 0 1").exit_code, 0);
+  ASSERT_EQ(run("fleetmap", "map import " + real_map(rg.vectormap) + " --name " + rg.name + " --replace --drop topology")
+                .exit_code,
+            0);
   EXPECT_EQ(scalar("SELECT COUNT(*) FROM topo_nodes WHERE map_id = " + mid), 0);
   EXPECT_EQ(run("fleetmap", "topo route " + std::string(rg.name) + " 0 1").exit_code, 4);
   import_graph(rg);
