@@ -188,9 +188,11 @@ MapReplaceReport prepare_replace(mysqlpp::Connection& c, unsigned map_id, const 
     execute(c, "DELETE FROM topo_nodes WHERE map_id = " + mid);
     execute(c, "DELETE FROM topo_graphs WHERE map_id = " + mid);
   }
-  if (drop.georef && all.georef)
+  if (drop.georef && all.georef) {
     execute(c, "UPDATE maps SET geo_crs = NULL, geo_tx = NULL, geo_ty = NULL, geo_rotation = NULL, geo_scale = NULL"
                " WHERE id = " + mid);
+    execute(c, "DELETE FROM georef_control_points WHERE map_id = " + mid);
+  }
   return rep;
 }
 
