@@ -21,6 +21,7 @@
 #include "app/exit_codes.h"
 #include "common/core/error.h"
 #include "server/cli/command.h"
+#include "server/cli/gis_import.h"
 #include "server/cli/map_source.h"
 
 namespace fleetmap {
@@ -32,8 +33,8 @@ struct ReadOptions {
 };
 
 void add_read_options(CLI::App* cmd, ReadOptions& o) {
-  cmd->add_option("--format", o.format, "input format: seed, amrl, or auto (amrl for *.vectormap.txt)")
-      ->check(CLI::IsMember({"auto", "seed", "amrl"}))
+  cmd->add_option("--format", o.format, "input format: seed, amrl, ogr (GIS, through GDAL/OGR), or auto (by the name)")
+      ->check(CLI::IsMember({"auto", "seed", "amrl", "ogr"}))
       ->capture_default_str();
   cmd->add_option("--height", o.amrl.height, "amrl: height of every wall (m)")->capture_default_str();
   cmd->add_option("--in-out", o.amrl.in_out, "amrl: 0 indoor, 1 outdoor")->check(CLI::IsMember({0, 1}))->capture_default_str();
@@ -89,9 +90,11 @@ ImportProgress progress_printer() {
 struct MapCheckArgs {
   std::string file;
   ReadOptions read;
+  GisImportOptions gis;
 };
 
-int run_map_check(const MapCheckArgs& a, CliContext&) {
+int run_map_check(const MapCheckArgs& a, CliContext& ctx) {
+  if (use_ogr(a.file, a.read.format)) return run_gis_check(a.file, a.gis, ctx);
   Map m = read_map_file(a.file, a.read);
   std::cout << a.file << ": ok: " << describe_map(m) << "\n";
   return exit_code::kOk;
@@ -102,6 +105,7 @@ void add_map_check(CLI::App& map, CliContext& ctx) {
   auto* cmd = map.add_subcommand("check", "validate a map file without touching the database");
   cmd->add_option("FILE", a->file, "map file")->required();
   add_read_options(cmd, a->read);
+  add_gis_options(cmd, a->gis);
   run_with(*cmd, a, ctx, run_map_check);
 }
 
@@ -110,9 +114,11 @@ struct MapImportArgs {
   std::string file, name;
   bool replace = false;
   ReadOptions read;
+  GisImportOptions gis;
 };
 
 int run_map_import(const MapImportArgs& a, CliContext& ctx) {
+  if (use_ogr(a.file, a.read.format)) return run_gis_import(a.file, a.name, a.replace, a.gis, ctx);
   if (auto e = check_map_name(a.name)) throw BadInput(*e);
   Map m = read_map_file(a.file, a.read);
   const auto t0 = std::chrono::steady_clock::now();
@@ -131,6 +137,7 @@ void add_map_import(CLI::App& map, CliContext& ctx) {
   cmd->add_option("--name", a->name, "map name, [A-Za-z0-9_.-]{1,64}")->required();
   cmd->add_flag("--replace", a->replace, "replace a map of the same name");
   add_read_options(cmd, a->read);
+  add_gis_options(cmd, a->gis);
   run_with(*cmd, a, ctx, run_map_import);
 }
 

@@ -1,0 +1,28 @@
+#pragma once
+// map check|import of a GIS source read by OGR (common/gis/ogr_import.h): the options,
+// the operator's report, the storing. map_commands.cpp dispatches here for GIS files.
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "app/cli_context.h"
+
+namespace fleetmap {
+
+struct GisImportOptions {
+  std::string rules, crs, origin, frame_of, clip, invalid = "repair";
+  std::vector<std::string> layers;
+  bool no_clip = false;
+};
+
+void add_gis_options(CLI::App* cmd, GisImportOptions& o);
+
+// format "ogr", or "auto" and a name OGR should read (is_ogr_source).
+bool use_ogr(const std::string& file, const std::string& format);
+
+int run_gis_check(const std::string& file, const GisImportOptions& o, CliContext& ctx);
+int run_gis_import(const std::string& file, const std::string& name, bool replace, const GisImportOptions& o,
+                   CliContext& ctx);
+
+}  // namespace fleetmap
