@@ -12,9 +12,11 @@ size_t drop_repeated_vertices(Chain& c) {
 }
 
 double signed_area2(const Chain& ring) {
+  if (ring.empty()) return 0;
+  // Relative to the first vertex: in UTM (y = 5e6 m) absolute cross products cancel out.
+  const Point r = ring.front();
   double a = 0;
-  for (size_t i = 0; i + 1 < ring.size(); ++i) a += cross(ring[i], ring[i + 1]);
-  if (!ring.empty() && !(ring.front() == ring.back())) a += cross(ring.back(), ring.front());
+  for (size_t i = 0; i + 1 < ring.size(); ++i) a += cross(ring[i] - r, ring[i + 1] - r);
   return a;
 }
 
