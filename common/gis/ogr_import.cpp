@@ -187,6 +187,33 @@ Polygon square(Point c, double side) {
   return {{c.x - h, c.y - h}, {c.x + h, c.y - h}, {c.x + h, c.y + h}, {c.x - h, c.y + h}};
 }
 
+// GDAL's warnings (a DXF block it cannot find, a date it half parses) go into the report
+// instead of stderr, the first few verbatim; errors still reach CPLGetLastErrorMsg.
+class GdalWarnings {
+ public:
+  explicit GdalWarnings(OgrImportReport& rep) : rep_(rep) { CPLPushErrorHandlerEx(handler, this); }
+  ~GdalWarnings() {
+    CPLPopErrorHandler();
+    if (count_ > kKept) rep_.warnings.push_back("GDAL: " + std::to_string(count_ - kKept) + " more warnings");
+  }
+  GdalWarnings(const GdalWarnings&) = delete;
+  GdalWarnings& operator=(const GdalWarnings&) = delete;
+
+ private:
+  static constexpr size_t kKept = 5;
+  static void handler(CPLErr level, CPLErrorNum num, const char* msg) {
+    auto* self = static_cast<GdalWarnings*>(CPLGetErrorHandlerUserData());
+    if (level == CE_Debug) return;
+    if (level == CE_Warning) {
+      if (self->count_++ < kKept) self->rep_.warnings.push_back(std::string("GDAL: ") + msg);
+      return;
+    }
+    CPLDefaultErrorHandler(level, num, msg);
+  }
+  OgrImportReport& rep_;
+  size_t count_ = 0;
+};
+
 std::string where(const Kept& k) { return "layer '" + k.layer + "' feature " + std::to_string(k.fid); }
 
 }  // namespace
@@ -202,9 +229,10 @@ bool is_ogr_source(const std::string& source) {
 OgrImport import_ogr(const std::string& source, const OgrImportOptions& opt) {
   const bool osm_name = ends_with_ci(source, ".osm") || ends_with_ci(source, ".pbf");
   const ImportRules rules = opt.rules ? *opt.rules : (osm_name ? osm_default_rules() : plain_default_rules());
-  GDALDatasetUniquePtr ds = open_ogr_source(source, rule_keys(rules));
   OgrImport out;
   OgrImportReport& rep = out.report;
+  GdalWarnings warnings(rep);
+  GDALDatasetUniquePtr ds = open_ogr_source(source, rule_keys(rules));
   rep.driver = ds->GetDriver() ? ds->GetDriver()->GetDescription() : "";
   const bool osm = rep.driver == "OSM";
 
