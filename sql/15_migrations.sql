@@ -31,3 +31,7 @@ UPDATE maps SET geo_crs = CONCAT('+proj=tmerc +lat_0=', geo_lat, ' +lon_0=', geo
                 geo_tx = 0, geo_ty = 0, geo_rotation = COALESCE(geo_heading, 0), geo_scale = 1
   WHERE geo_lat IS NOT NULL AND geo_lon IS NOT NULL AND geo_crs IS NULL;
 ALTER TABLE maps DROP COLUMN IF EXISTS geo_lat, DROP COLUMN IF EXISTS geo_lon, DROP COLUMN IF EXISTS geo_heading;
+
+-- GIS import: an obstacle's semantic keeps every attribute of its feature (seed 001
+-- section III; docs/gis-import.md), and OSM relations exceed 1 KiB.
+ALTER TABLE obstacles MODIFY semantic TEXT NOT NULL DEFAULT '';

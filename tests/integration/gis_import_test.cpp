@@ -101,7 +101,8 @@ TEST(GisImport, MalformedOrInvalidSourceImportsNothing) {
 
   const std::string bowtie = temp_path("bowtie.geojson");
   write_file(bowtie, R"({"type": "FeatureCollection", "features": [
-    {"type": "Feature", "id": 1, "properties": {}, "geometry": {"type": "Polygon",
+    {"type": "Feature", "id": 1, "properties": {"long": ")" + std::string(2000, 'x') + R"("},
+     "geometry": {"type": "Polygon",
      "coordinates": [[[0, 0], [10, 0], [10, 10], [0, 10], [0, 0]]]}},
     {"type": "Feature", "id": 7, "properties": {}, "geometry": {"type": "Polygon",
      "coordinates": [[[20, 0], [30, 10], [30, 0], [20, 10], [20, 0]]]}}]})");
@@ -114,6 +115,10 @@ TEST(GisImport, MalformedOrInvalidSourceImportsNothing) {
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
   EXPECT_NE(ok.err.find("feature 7"), std::string::npos) << ok.err;
   EXPECT_EQ(count_of("obstacles", "it_gis_bowtie"), 3);
+  // Every attribute kept: obstacles.semantic is TEXT.
+  EXPECT_GT(scalar("SELECT MAX(LENGTH(o.semantic)) FROM obstacles o JOIN maps m ON m.id = o.map_id WHERE m.name = "
+                   "'it_gis_bowtie'"),
+            2000);
 }
 
 }  // namespace

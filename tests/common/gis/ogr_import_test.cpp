@@ -292,6 +292,25 @@ TEST(OgrImport, InvalidPolygonRefusedNamesTheFeatureOrRepaired) {
   for (const Obstacle& o : r.map.obstacles) EXPECT_GT(signed_area(o), 0);
 }
 
+TEST(OgrImport, EveryAttributeKeptInTheSemanticEvenPastOneKilobyte) {
+  const std::string long_text = std::string(1500, 'x') + "; #1 100%";
+  const TempFile f("long.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature", "id": 4,
+    "properties": {"name": ")" + long_text + R"(", "levels": 2, "kind": "hall"},
+    "geometry": {"type": "Polygon", "coordinates": [[[0, 0], [0, 10], [10, 10], [10, 0], [0, 0]]]}}]})");
+  OgrImportOptions opt;
+  opt.crs = "EPSG:32631";
+  const OgrImport r = import_ogr(f.path(), opt);
+  ASSERT_EQ(r.map.obstacles.size(), 1u);
+  const Obstacle& o = r.map.obstacles[0];
+  EXPECT_GT(o.semantic.size(), 1024u);
+  EXPECT_EQ(o.semantic.find_first_of(";#%"), std::string::npos);  // seed format delimiters escaped
+  const auto j = semantic(o);
+  EXPECT_EQ(j.at("name"), long_text);
+  EXPECT_EQ(j.at("kind"), "hall");
+  EXPECT_EQ(j.at("levels"), 2);
+  for (const Segment& s : o.segments) EXPECT_EQ(s.h, 6);  // the plain rule: levels x 3 m
+}
+
 TEST(OgrImport, TruncatedGeoJsonImportsNothing) {
   const TempFile f("truncated.geojson", std::string(kBowtie).substr(0, 150));
   EXPECT_THROW(import_ogr(f.path()), FileFormatError);
