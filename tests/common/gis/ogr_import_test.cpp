@@ -242,6 +242,39 @@ TEST(OgrImport, DxfInCentimetresBecomesMetres) {
   EXPECT_NEAR(walls.ymax, lines.MaxY * 0.01, 1e-9);
 }
 
+TEST(OgrImport, Ubc2026HeightsFromTheRulesFile) {
+  const std::string file = gis("ubc-vancouver/current-2026/ubcv_buildings.geojson");
+  OgrImportOptions opt;
+  opt.rules = parse_import_rules(R"({"rules": [{"geometry": "polygon", "action": "closed", "tag": "building",
+      "height": {"attribute": "BLDG_HEIGHT", "levels_attribute": "MAX_FLOORS", "level_height": 3.5, "default": 4}}]})",
+                                 "test rules");
+  const OgrImport r = import_ogr(file, opt);
+  // OGR's reading: the height each building's segments must carry.
+  auto ds = open(file);
+  std::map<long long, double> expected;
+  size_t rings = 0;
+  for (auto& f : *ds->GetLayer(0)) {
+    const int hi = f->GetFieldIndex("BLDG_HEIGHT"), li = f->GetFieldIndex("MAX_FLOORS");
+    double h = 4;
+    if (f->IsFieldSetAndNotNull(hi) && f->GetFieldAsDouble(hi) > 0) h = f->GetFieldAsDouble(hi);
+    else if (f->IsFieldSetAndNotNull(li) && f->GetFieldAsInteger(li) > 0) h = 3.5 * f->GetFieldAsInteger(li);
+    expected[f->GetFID()] = h;
+    OGRGeometry* g = f->GetGeometryRef();
+    if (wkbFlatten(g->getGeometryType()) == wkbPolygon) rings += 1 + g->toPolygon()->getNumInteriorRings();
+    else
+      for (const OGRGeometry* p : *g->toMultiPolygon()) rings += 1 + p->toPolygon()->getNumInteriorRings();
+  }
+  ASSERT_EQ(expected.size(), 443u);  // README
+  EXPECT_EQ(r.map.obstacles.size(), rings);
+  size_t measured = 0;
+  for (const Obstacle& o : r.map.obstacles) {
+    const long long fid = semantic(o).at("fid");
+    for (const Segment& s : o.segments) EXPECT_DOUBLE_EQ(s.h, expected.at(fid)) << fid;
+    if (semantic(o).contains("BLDG_HEIGHT")) ++measured;
+  }
+  EXPECT_GT(measured, 0u);
+}
+
 class TempFile {
  public:
   TempFile(const std::string& name, const std::string& text)
