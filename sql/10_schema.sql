@@ -36,7 +36,7 @@ CREATE TABLE IF NOT EXISTS obstacles (
   ord         INT UNSIGNED NOT NULL,          -- position in the map file, keeps export order
   obstacle_id INT NOT NULL,                   -- the file's id
   st          TINYINT UNSIGNED NOT NULL,      -- shape type 1..6
-  semantic    VARCHAR(1024) NOT NULL DEFAULT '',
+  semantic    TEXT NOT NULL DEFAULT '',       -- every attribute of a GIS feature (docs/gis-import.md)
   -- minimum bounding circle, computed once at import (seed 000 section 4.1)
   cx          DOUBLE NOT NULL,
   cy          DOUBLE NOT NULL,

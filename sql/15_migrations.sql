@@ -35,3 +35,7 @@ ALTER TABLE maps DROP COLUMN IF EXISTS geo_lat, DROP COLUMN IF EXISTS geo_lon, D
 -- Replace without loss: a replaced map keeps its row and counts its imports
 -- (protocol/map_replace.h).
 ALTER TABLE maps ADD COLUMN IF NOT EXISTS revision INT UNSIGNED NOT NULL DEFAULT 1 AFTER imported_at;
+
+-- GIS import: an obstacle's semantic keeps every attribute of its feature (seed 001
+-- section III; docs/gis-import.md), and OSM relations exceed 1 KiB.
+ALTER TABLE obstacles MODIFY semantic TEXT NOT NULL DEFAULT '';

@@ -51,9 +51,10 @@ std::optional<std::string> check_number(double v, double limit, std::string_view
 
 }  // namespace
 
-std::optional<std::string> check_text(std::string_view text, std::string_view what, bool free_form) {
-  if (text.size() > kMaxTextBytes)
-    return "expected " + std::string(what) + " of at most " + std::to_string(kMaxTextBytes) + " bytes, got " +
+std::optional<std::string> check_text(std::string_view text, std::string_view what, bool free_form,
+                                      size_t max_bytes) {
+  if (text.size() > max_bytes)
+    return "expected " + std::string(what) + " of at most " + std::to_string(max_bytes) + " bytes, got " +
            std::to_string(text.size());
   // The reader trims blanks around fields, so a semantic string with blanks at its ends
   // would not read back equal.
@@ -104,7 +105,7 @@ std::optional<std::string> check_shape(const Obstacle& o, MapKind kind) {
   const std::string shape = "shape type " + std::to_string(static_cast<int>(o.type)) + " (" +
                            std::string(to_string(o.type)) + ")";
   if (segs.empty()) return "expected at least one segment in obstacle " + std::to_string(o.id) + ", got none";
-  if (auto e = check_text(o.semantic, "obstacle semantic")) return e;
+  if (auto e = check_text(o.semantic, "obstacle semantic", false, kMaxObstacleTextBytes)) return e;
 
   if (o.type == ShapeType::Ramp) {
     for (size_t i = 0; i < segs.size(); ++i)

@@ -14,11 +14,15 @@ namespace fleetmap {
 inline constexpr double kMaxCoordinate = 1e7;
 inline constexpr double kMaxHeight = 1000;
 inline constexpr size_t kMaxTextBytes = 1024;  // semantic strings and notes (database column)
+// An obstacle's semantic holds every attribute of a GIS feature (docs/gis-import.md);
+// OSM relations exceed 1 KiB, so obstacles.semantic is a TEXT column.
+inline constexpr size_t kMaxObstacleTextBytes = 65535;
 
 // A semantic string: valid UTF-8, no control characters, none of ; # % (they delimit
 // the seed format), at most kMaxTextBytes bytes. A free-form text (a note, which runs
 // to the end of its line) may hold the delimiters.
-std::optional<std::string> check_text(std::string_view text, std::string_view what, bool free_form = false);
+std::optional<std::string> check_text(std::string_view text, std::string_view what, bool free_form = false,
+                                      size_t max_bytes = kMaxTextBytes);
 
 std::optional<std::string> check_border(const Border& b);
 

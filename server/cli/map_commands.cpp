@@ -25,6 +25,7 @@
 #include "server/cli/georef_command.h"
 #include "server/cli/map_export_command.h"
 #include "server/cli/gis_publish.h"
+#include "server/cli/gis_import.h"
 #include "server/cli/map_source.h"
 
 namespace fleetmap {
@@ -36,8 +37,8 @@ struct ReadOptions {
 };
 
 void add_read_options(CLI::App* cmd, ReadOptions& o) {
-  cmd->add_option("--format", o.format, "input format: seed, amrl, or auto (amrl for *.vectormap.txt)")
-      ->check(CLI::IsMember({"auto", "seed", "amrl"}))
+  cmd->add_option("--format", o.format, "input format: seed, amrl, ogr (GIS, through GDAL/OGR), or auto (by the name)")
+      ->check(CLI::IsMember({"auto", "seed", "amrl", "ogr"}))
       ->capture_default_str();
   cmd->add_option("--height", o.amrl.height, "amrl: height of every wall (m)")->capture_default_str();
   cmd->add_option("--in-out", o.amrl.in_out, "amrl: 0 indoor, 1 outdoor")->check(CLI::IsMember({0, 1}))->capture_default_str();
@@ -93,9 +94,11 @@ ImportProgress progress_printer() {
 struct MapCheckArgs {
   std::string file;
   ReadOptions read;
+  GisImportOptions gis;
 };
 
-int run_map_check(const MapCheckArgs& a, CliContext&) {
+int run_map_check(const MapCheckArgs& a, CliContext& ctx) {
+  if (use_ogr(a.file, a.read.format)) return run_gis_check(a.file, a.gis, ctx);
   Map m = read_map_file(a.file, a.read);
   std::cout << a.file << ": ok: " << describe_map(m) << "\n";
   return exit_code::kOk;
@@ -106,6 +109,7 @@ void add_map_check(CLI::App& map, CliContext& ctx) {
   auto* cmd = map.add_subcommand("check", "validate a map file without touching the database");
   cmd->add_option("FILE", a->file, "map file")->required();
   add_read_options(cmd, a->read);
+  add_gis_options(cmd, a->gis);
   run_with(*cmd, a, ctx, run_map_check);
 }
 
@@ -115,6 +119,7 @@ struct MapImportArgs {
   bool replace = false, force = false;
   std::vector<std::string> drop;
   ReadOptions read;
+  GisImportOptions gis;
 };
 
 // What a replace kept, dropped and stranded (protocol/map_replace.h).
@@ -141,6 +146,12 @@ int run_map_import(const MapImportArgs& a, CliContext& ctx) {
   options.drop = parse_map_drop(a.drop);
   options.force = a.force;
   options.progress = progress_printer();
+  if (use_ogr(a.file, a.read.format)) {
+    const MapImportReport r = run_gis_import(a.file, a.name, options, a.gis, ctx);
+    if (r.replaced) print_replace_report(r.replace);
+    publish_gis_layers(ctx.connection(), a.name);
+    return exit_code::kOk;
+  }
   Map m = read_map_file(a.file, a.read);
   const auto t0 = std::chrono::steady_clock::now();
   MapStore store(ctx.connection());
@@ -173,6 +184,7 @@ void add_map_import(CLI::App& map, CliContext& ctx) {
                 "left outside the new border or inside a new closed obstacle")
       ->needs(replace);
   add_read_options(cmd, a->read);
+  add_gis_options(cmd, a->gis);
   run_with(*cmd, a, ctx, run_map_import);
 }
 

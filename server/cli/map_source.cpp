@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "common/core/error.h"
+#include "common/gis/ogr_import.h"
 #include "common/io/read_map_file.h"
 #include "common/io/scene_geojson.h"
 #include "common/slicing/scene_laser.h"
@@ -18,6 +19,8 @@ bool is_amrl_file(const std::string& file) { return map_file_format(file) == Map
 
 Map load_map_source(const std::string& name, const std::string& file, CliContext& ctx) {
   if (file.empty()) return MapStore(ctx.connection()).load(name);
+  // A GIS file with the built-in rules (docs/gis-import.md); its objects are not loaded.
+  if (is_ogr_source(file)) return import_ogr(file).map;
   return read_map_file(file);
 }
 

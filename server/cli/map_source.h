@@ -12,8 +12,8 @@ namespace fleetmap {
 
 bool is_amrl_file(const std::string& file);
 
-// file empty: the stored map `name`; otherwise the file. Throws MapNotFound,
-// MapFormatError.
+// file empty: the stored map `name`; otherwise the file (a GIS file through OGR, by its
+// name: common/gis/ogr_import.h). Throws MapNotFound, MapFormatError, BadInput.
 Map load_map_source(const std::string& name, const std::string& file, CliContext& ctx);
 
 // Where the objects of a command's map come from: a stored map's scene
