@@ -2,13 +2,12 @@
 // map check|import of a GIS source read by OGR (common/gis/ogr_import.h): the options,
 // the operator's report, the storing. map_commands.cpp dispatches here for GIS files.
 #include <string>
-
-#include "protocol/map_store.h"
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "app/cli_context.h"
+#include "protocol/map_store.h"
 
 namespace fleetmap {
 
