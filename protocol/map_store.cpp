@@ -154,7 +154,7 @@ MapImportReport MapStore::import(const Map& m, const std::string& name, const st
     q << " WHERE id = " << id;
     q.execute();
     // Control points describe the georeference they were fitted to (GeorefStore).
-    if (o.georef) execute(c_, "DELETE FROM georef_control_points WHERE map_id = " + std::to_string(id));
+    if (o.georef) execute(c_, "DELETE FROM georef_control_points WHERE map_id = " + id);
   } else {
     q << "INSERT INTO maps (name, mx1, my1, mx4, my4, border, source, obstacles, segments) VALUES ("
       << mysqlpp::quote << name << ", " << n(m.border.mx1) << ", " << n(m.border.my1) << ", " << n(m.border.mx4)
