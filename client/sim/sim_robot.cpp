@@ -103,11 +103,15 @@ void SimRobot::handle(const ReceivedAnswer& a) {
     moving_ = true;
     path_request_.reset();
   } else if (a.op == "Error" && a.request_id == path_request_ && goal_) {
-    // No planner on the server (or no path): head straight for the goal.
-    spdlog::warn("GetPath: {}; driving straight to the goal", a.params.value("code", "?"));
-    pursuit_.set_path({*goal_});
-    moving_ = true;
+    // No path (the server failed the task) or no planner: a straight line would drive
+    // into whatever is in the way, so the robot stays where it is and says so (Stopped).
+    spdlog::warn("GetPath refused ({}): {}; goal ({:.2f}, {:.2f}) dropped, stopping", a.params.value("code", "?"),
+                 a.params.value("message", ""), goal_->x, goal_->y);
+    pursuit_.clear();
+    goal_.reset();
     path_request_.reset();
+    ++goals_refused_;
+    stopped();
   } else if (a.op == "Abort") {
     spdlog::warn("abort: {}", a.params.value("reason", ""));
     pursuit_.clear();
