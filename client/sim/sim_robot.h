@@ -58,6 +58,7 @@ class SimRobot {
   void filter_step(const Odometry& odometry_since_update);
   double compass();
   void stopped();
+  void report_pose(double v, double w);  // SendPos of the filter's estimate
 
   RobotClient& client_;
   SimRobotOptions o_;
@@ -76,6 +77,7 @@ class SimRobot {
   size_t goals_refused_ = 0;
   bool moving_ = false;
   bool bumped_ = false;
+  bool pose_resent_ = false;  // this goal's GetPath got no_pose once: the pose was sent again
 };
 
 }  // namespace fleetmap

@@ -50,6 +50,7 @@ class GoalCheck : public ::testing::Test {
     admin()->query("UPDATE robots SET x = 5, y = 5, ini_x = NULL, ini_y = NULL, radius = NULL, "
                    "body_height = NULL, state = 'offline' WHERE db_user = 'gc_r1'").execute();
     robot_id_ = std::to_string(scalar("SELECT id FROM robots WHERE db_user = 'gc_r1'"));
+    admin()->query("DELETE FROM avoided_areas WHERE area_key = 'late'").execute();  // left by a failed run
   }
   long long tasks() { return scalar("SELECT COUNT(*) FROM tasks WHERE robot_id = " + robot_id_); }
   // `fleetmap goal gc_r1 X Y` refused: exit 3, no task, the message has `why`.
@@ -138,7 +139,6 @@ TEST_F(GoalCheck, NoPathAtGetPathFailsTheTaskAndTheSimulatedRobotStops) {
   ASSERT_EQ(run("fleetmap", "pose-ini gc_r1 5 5 0").exit_code, 0);
   ASSERT_EQ(run("fleetmap", "goal gc_r1 15 8").exit_code, 0);
   const std::string task = std::to_string(scalar("SELECT MAX(id) FROM tasks WHERE robot_id = " + robot_id_));
-  run("fleetmap", "avoid remove gc_gap late");
   ASSERT_EQ(run("fleetmap", "avoid add gc_gap --id late --wkt 'POLYGON((14 7, 16 7, 16 9, 14 9, 14 7))'").exit_code, 0);
 
   ServerProcess server("", "gc_server.log");
