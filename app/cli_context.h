@@ -21,6 +21,8 @@ class CliContext {
   void add_connection_options(CLI::App& app);
 
   DbSettings settings() const;
+  // --config as given (nullopt: the file is found as find_config_file says).
+  const std::optional<std::string>& config_path() const { return config_; }
   mysqlpp::Connection& connection();  // connects on first use
 
   // Set by the command that ran (its callback runs inside CLI::App::parse); main returns it.

@@ -18,8 +18,15 @@ class DbError : public Failure {
   using Failure::Failure;
 };
 
+// Throws DbError when there is no account to connect as: no config file was found and
+// no --user given (the message says where the file was looked for), or the file's role
+// section names none. connect() asks it first.
+void check_account(const DbSettings& s);
+
 // Connects (utf8mb4, READ COMMITTED: a server's SELECT ... FOR UPDATE must not take gap
-// locks that block robots' inserts, SPEC 9). Throws DbError. multi_statements lets one
+// locks that block robots' inserts, SPEC 9). Throws DbError, whose message says what
+// to do when the server is down (its socket missing, nothing listening) or the account
+// is refused. multi_statements lets one
 // round trip carry several statements (the server's batched writes, protocol/write_batch.h).
 std::unique_ptr<mysqlpp::Connection> connect(const DbSettings& s, bool multi_statements = false);
 

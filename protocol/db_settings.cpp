@@ -17,6 +17,15 @@ std::string trim(const std::string& s) {
   return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
 }
 
+// A '#' after a space or tab starts a comment, as the sample file writes them
+// ("port = 33306   # loopback"); a '#' inside a word stays (a password "pa#ss"), so a
+// value that must hold " #" goes into a password_file.
+std::string strip_comment(const std::string& line) {
+  for (size_t i = 1; i < line.size(); ++i)
+    if (line[i] == '#' && (line[i - 1] == ' ' || line[i - 1] == '\t')) return trim(line.substr(0, i));
+  return line;
+}
+
 unsigned parse_port(const std::string& v, const std::string& where) {
   try {
     size_t used = 0;
@@ -62,7 +71,13 @@ std::optional<std::string> find_config_file() {
   return std::nullopt;
 }
 
-void apply_config_text(DbSettings& s, Role role, const std::string& text, const std::string& file) {
+std::string config_search_path() {
+  return "--config FILE, $FLEETMAP_CONFIG, $FLEETMAP_HOME/fleetmap.conf, ./.fleetmap/fleetmap.conf, "
+         "/etc/fleetmap/fleetmap.conf";
+}
+
+void apply_config_text(DbSettings& s, Role role, const std::string& text, const std::string& file,
+                       bool read_password_files) {
   std::istringstream in(text);
   std::string line, section;
   size_t no = 0;
@@ -72,6 +87,7 @@ void apply_config_text(DbSettings& s, Role role, const std::string& text, const 
     const std::string where = file + ":" + std::to_string(no);
     line = trim(line);
     if (line.empty() || line[0] == '#' || line[0] == ';') continue;
+    line = strip_comment(line);
     if (line.front() == '[') {
       if (line.back() != ']') throw FileFormatError(where + ": expected '[section]', got '" + line + "'");
       section = trim(line.substr(1, line.size() - 2));
@@ -89,7 +105,7 @@ void apply_config_text(DbSettings& s, Role role, const std::string& text, const 
     } else if (section == mine) {
       if (key == "user") s.user = value;
       else if (key == "password") s.password = value;
-      else if (key == "password_file") s.password = trim(read_file(value, "password file"));
+      else if (key == "password_file") s.password = read_password_files ? trim(read_file(value, "password file")) : "";
       else s.program[key] = value;  // the program's own settings
     }
   }
@@ -105,8 +121,15 @@ void apply_environment(DbSettings& s) {
   if (const char* v = env("FLEETMAP_PASSWORD")) s.password = v;
 }
 
+std::map<std::string, std::string> program_settings(Role role, const std::string& config_path) {
+  DbSettings s;
+  apply_config_text(s, role, read_file(config_path, "config file"), config_path, false);
+  return s.program;
+}
+
 DbSettings load_settings(Role role, const std::optional<std::string>& config_path) {
   DbSettings s;
+  s.section = section_name(role);
   const std::optional<std::string> path = config_path ? config_path : find_config_file();
   if (path) apply_config_text(s, role, read_file(*path, "config file"), *path);
   apply_environment(s);

@@ -8,6 +8,9 @@
 //   socket = /path/sock    (or password_file = /path)
 //   name = fleetmap
 //
+// Comments: a line starting with '#' or ';', and the rest of a line from a '#' that
+// follows a space or tab ("port = 33306   # loopback").
+//
 // Environment: FLEETMAP_CONFIG (the file), FLEETMAP_HOST, FLEETMAP_PORT, FLEETMAP_SOCKET,
 // FLEETMAP_DB, FLEETMAP_USER, FLEETMAP_PASSWORD. See etc/fleetmap.conf.sample.
 #include <map>
@@ -27,6 +30,7 @@ struct DbSettings {
   std::string user;
   std::string password;
   std::string source;  // which config file was read, for messages
+  std::string section;  // the role's section ("operator"), for messages
   // Other keys of the role's section: settings of the program itself (e.g. the server's
   // alive_period_s), read by that program.
   std::map<std::string, std::string> program;
@@ -36,12 +40,22 @@ struct DbSettings {
 // ./.fleetmap/fleetmap.conf, else /etc/fleetmap/fleetmap.conf; nullopt when none exists.
 std::optional<std::string> find_config_file();
 
+// Where find_config_file looks, in order, for messages.
+std::string config_search_path();
+
 // Defaults, then the file's [database] and [role] sections (an explicit path must exist),
 // then the environment. Throws std::runtime_error naming the file and line on a bad file.
 DbSettings load_settings(Role role, const std::optional<std::string>& config_path);
 
-// Parses one config text into settings for a role (exposed for tests).
-void apply_config_text(DbSettings& s, Role role, const std::string& text, const std::string& file);
+// Parses one config text into settings for a role (exposed for tests). Without
+// read_password_files a password_file is not opened (its password is left empty).
+void apply_config_text(DbSettings& s, Role role, const std::string& text, const std::string& file,
+                       bool read_password_files = true);
+
+// The program settings of a role's section of this file (the server's robot_radius_m,
+// as `fleetmap goal` plans with it), without its account: another role's password file
+// need not be readable. Throws like load_settings for a bad file.
+std::map<std::string, std::string> program_settings(Role role, const std::string& config_path);
 void apply_environment(DbSettings& s);
 
 }  // namespace fleetmap

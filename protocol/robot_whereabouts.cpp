@@ -8,7 +8,7 @@ namespace fleetmap {
 RobotWhereabouts robot_whereabouts(mysqlpp::Connection& c, const std::string& robot) {
   mysqlpp::Query q = c.query();
   q << "SELECT r.id, r.map_id, COALESCE(m.name, ''), r.x, r.y, r.ini_x, r.ini_y, r.radius, r.body_height,"
-       " r.can_stairs FROM robots r"
+       " r.can_stairs, r.state, COALESCE(r.last_seen, '') FROM robots r"
        " LEFT JOIN maps m ON m.id = r.map_id WHERE r.db_user = "
     << mysqlpp::quote << robot << " AND r.removed_at IS NULL";
   const mysqlpp::StoreQueryResult res = q.store();
@@ -25,6 +25,8 @@ RobotWhereabouts robot_whereabouts(mysqlpp::Connection& c, const std::string& ro
   w.radius = sql::opt_double(r[7]);
   w.body_height = sql::opt_double(r[8]);
   w.can_stairs = sql::to_int(r[9]) != 0;
+  w.state = robot_state_from_string(sql::to_string(r[10]));
+  w.last_seen = sql::to_string(r[11]);
   return w;
 }
 

@@ -378,6 +378,14 @@ bool SceneStore::remove_avoided_area(const std::string& map, const std::string& 
   return q.execute().rows() > 0;
 }
 
+bool SceneStore::remove_object(const std::string& map, const std::string& key) {
+  const unsigned mid = map_id(map);
+  mysqlpp::Query q = c_.query();
+  // object_elements follow by ON DELETE CASCADE (sql/60_semantic.sql).
+  q << "DELETE FROM env_objects WHERE map_id = " << mid << " AND object_key = " << mysqlpp::quote << key;
+  return q.execute().rows() > 0;
+}
+
 std::vector<TagInfo> SceneStore::tags() {
   std::vector<TagInfo> out;
   for (const mysqlpp::Row& r : c_.query("SELECT tag, class, description FROM tags ORDER BY tag").store())

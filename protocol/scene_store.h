@@ -128,7 +128,11 @@ class SceneStore {
   // polygon common/geometry/polygon.h refuses), SceneKeyExists, MapNotFound.
   std::string add_avoided_area(const std::string& map, const std::string& wkt, const std::string& key = "");
   std::vector<AvoidedArea> avoided_areas(const std::string& map);
+  // Deletes one avoided area; false when the map has none with that key. Throws MapNotFound.
   bool remove_avoided_area(const std::string& map, const std::string& key);
+  // Deletes one object, imported or observed, with its elements; false when the map has
+  // none with that key. Throws MapNotFound.
+  bool remove_object(const std::string& map, const std::string& key);
 
   std::vector<TagInfo> tags();
   // Adds a tag or changes its class (and its description, when given); true when added.

@@ -13,6 +13,7 @@ std::string_view to_string(TaskEvent e) {
     case TaskEvent::AbortAcknowledged: return "abort acknowledged";
     case TaskEvent::AbortedUnsent: return "aborted before it was sent";
     case TaskEvent::Replaced: return "replaced by a new goal";
+    case TaskEvent::NoPath: return "no path";
     case TaskEvent::RobotLost: return "robot lost";
     case TaskEvent::RobotRemoved: return "robot removed";
   }
@@ -53,6 +54,7 @@ TaskTransition task_transition(TaskState from, TaskEvent event) {
     case TaskEvent::AbortedUnsent:
     case TaskEvent::Replaced:
       return TaskTransition::to(TaskState::Aborted);
+    case TaskEvent::NoPath:
     case TaskEvent::RobotLost:
     case TaskEvent::RobotRemoved:
       return TaskTransition::to(TaskState::Failed);

@@ -9,7 +9,7 @@
 //   assigned --GoalAcknowledged--> acknowledged --RobotMoving--> active --GoalReached--> done
 //   assigned, acknowledged --PathPlanned--> active
 //   any open state --AbortAcknowledged, AbortedUnsent, Replaced--> aborted
-//   any open state --RobotLost, RobotRemoved--> failed
+//   any open state --NoPath, RobotLost, RobotRemoved--> failed
 //
 // done, aborted and failed are final: nothing reopens a task (an Abort acknowledged
 // after the robot reached its goal leaves the task done).
@@ -29,6 +29,7 @@ enum class TaskEvent {
   AbortAcknowledged,  // the robot's OpAck of the pushed Abort
   AbortedUnsent,      // an operator's abort before the SetPosEnd was pushed: nothing to tell the robot
   Replaced,           // an operator gave the robot a new goal (its SetPosEnd replaces this one)
+  NoPath,             // GetPath found no path to the task's goal: the robot stops, the task fails with why
   RobotLost,          // silent for lost_after_periods Alive periods
   RobotRemoved,       // the operator removed the robot
 };
@@ -36,7 +37,8 @@ enum class TaskEvent {
 inline constexpr TaskEvent kTaskEvents[] = {
     TaskEvent::GoalAcknowledged, TaskEvent::PathPlanned, TaskEvent::RobotMoving,
     TaskEvent::GoalReached,      TaskEvent::AbortAcknowledged, TaskEvent::AbortedUnsent,
-    TaskEvent::Replaced,         TaskEvent::RobotLost,   TaskEvent::RobotRemoved};
+    TaskEvent::Replaced,         TaskEvent::NoPath,      TaskEvent::RobotLost,
+    TaskEvent::RobotRemoved};
 
 std::string_view to_string(TaskEvent e);
 

@@ -36,10 +36,15 @@ struct RequestWrites {
   std::vector<Answer> answers;
   std::vector<PoseReport> poses;
   std::vector<GpsReport> fixes;
+  // The request was refused (a ProtocolError's Error answer): its handler wrote nothing
+  // at once. An Error a handler answers itself after a direct write (GetPath's no_path
+  // failing the task) is not a refusal.
+  bool refused = false;
   void clear() {
     answers.clear();
     poses.clear();
     fixes.clear();
+    refused = false;
   }
 };
 

@@ -148,7 +148,7 @@ int main(int argc, char** argv) {
       throw LocalizationFailed("global localization failed; set an initial pose (fleetmap pose-ini) and restart");
     }
     robot.run(g_stop, duration);
-    spdlog::info("stopped: {} goal(s) reached", robot.goals_reached());
+    spdlog::info("stopped: {} goal(s) reached, {} refused by the server (no path)", robot.goals_reached(), robot.goals_refused());
     return exit_code::kOk;
   });
 }

@@ -78,6 +78,12 @@ void SimRobot::filter_step(const Odometry& odo) {
   filter_->update(laser_.scan(drive_.pose()), compass());
 }
 
+void SimRobot::report_pose(double v, double w) {
+  const loc::PoseEstimate now = filter_->estimate();
+  client_.send(RequestOp::SendPos, Json{{"x", now.pose.x}, {"y", now.pose.y}, {"theta", now.pose.theta}, {"v", v}, {"w", w}});
+  if (zoom_) zoom_->update(now.pose.point(), time_s_);
+}
+
 void SimRobot::stopped() {
   moving_ = false;
   client_.send(RequestOp::Stopped);
@@ -94,6 +100,7 @@ void SimRobot::handle(const ReceivedAnswer& a) {
   if (a.op == "SetPosEnd") {
     const SetPoseParams p = decode_set_pose(a.params);
     goal_ = Point{p.x, p.y};
+    pose_resent_ = false;
     spdlog::info("goal ({:.2f}, {:.2f}); asking for a path", p.x, p.y);
     path_request_ = client_.send(RequestOp::GetPath);
   } else if (a.op == "SetPath" && a.request_id == path_request_) {
@@ -102,12 +109,23 @@ void SimRobot::handle(const ReceivedAnswer& a) {
     pursuit_.set_path(p.waypoints);
     moving_ = true;
     path_request_.reset();
+  } else if (a.op == "Error" && a.request_id == path_request_ && goal_ && a.params.value("code", "") == "no_pose" &&
+             !pose_resent_) {
+    // The goal came before the server had its first SendPos: report the pose, ask again
+    // (the server serves a robot's requests in order).
+    pose_resent_ = true;
+    report_pose(0, 0);
+    path_request_ = client_.send(RequestOp::GetPath);
   } else if (a.op == "Error" && a.request_id == path_request_ && goal_) {
-    // No planner on the server (or no path): head straight for the goal.
-    spdlog::warn("GetPath: {}; driving straight to the goal", a.params.value("code", "?"));
-    pursuit_.set_path({*goal_});
-    moving_ = true;
+    // No path (the server failed the task) or no planner: a straight line would drive
+    // into whatever is in the way, so the robot stays where it is and says so (Stopped).
+    spdlog::warn("GetPath refused ({}): {}; goal ({:.2f}, {:.2f}) dropped, stopping", a.params.value("code", "?"),
+                 a.params.value("message", ""), goal_->x, goal_->y);
+    pursuit_.clear();
+    goal_.reset();
     path_request_.reset();
+    ++goals_refused_;
+    stopped();
   } else if (a.op == "Abort") {
     spdlog::warn("abort: {}", a.params.value("reason", ""));
     pursuit_.clear();
@@ -159,9 +177,7 @@ void SimRobot::run(const std::atomic<bool>& stop, double duration_s) {
       next_scan = time_s_ + o_.scan_every_s;
     }
     if (time_s_ >= next_report) {
-      const loc::PoseEstimate now = filter_->estimate();
-      client_.send(RequestOp::SendPos, Json{{"x", now.pose.x}, {"y", now.pose.y}, {"theta", now.pose.theta}, {"v", c.v}, {"w", c.w}});
-      if (zoom_) zoom_->update(now.pose.point(), time_s_);
+      report_pose(c.v, c.w);
       next_report = time_s_ + o_.report_every_s;
     }
     if (o_.realtime) {

@@ -2,8 +2,9 @@
 // The simulated robot of SPEC 6: a ground-truth world, a differential drive with noisy
 // odometry, a 2D laser at its mounting height with noise (and optional people), a noisy
 // compass; it localizes on the maps the server sends (global, then tracking), reports
-// SendPos at about 3 Hz, takes goals (SetPosEnd), asks for a path (GetPath; a straight
-// line when the server has no planner) and follows it by pure pursuit, stops on Abort.
+// SendPos at about 3 Hz, takes goals (SetPosEnd), asks for a path (GetPath) and follows
+// it by pure pursuit; stops on Abort, and when GetPath answers an Error (no_path: the
+// server failed the task) it drops the goal and reports Stopped where it stands.
 #include <atomic>
 #include <memory>
 #include <optional>
@@ -50,12 +51,14 @@ class SimRobot {
   const Pose& truth() const { return drive_.pose(); }
   localization::PoseEstimate estimate() const { return filter_->estimate(); }
   size_t goals_reached() const { return goals_reached_; }
+  size_t goals_refused() const { return goals_refused_; }  // GetPath answered an Error
 
  private:
   void handle(const ReceivedAnswer& a);
   void filter_step(const Odometry& odometry_since_update);
   double compass();
   void stopped();
+  void report_pose(double v, double w);  // SendPos of the filter's estimate
 
   RobotClient& client_;
   SimRobotOptions o_;
@@ -71,8 +74,10 @@ class SimRobot {
   std::optional<unsigned long long> path_request_;
   double time_s_ = 0;
   size_t goals_reached_ = 0;
+  size_t goals_refused_ = 0;
   bool moving_ = false;
   bool bumped_ = false;
+  bool pose_resent_ = false;  // this goal's GetPath got no_pose once: the pose was sent again
 };
 
 }  // namespace fleetmap

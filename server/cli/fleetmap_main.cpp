@@ -20,6 +20,11 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.footer("Exit codes: 0 ok, 1 failure (database, I/O), 2 malformed input, 3 no path, 4 not found or exists, "
              "64 usage.");
+  // The connection flags also after the subcommand (`fleetmap robots --config F`): an
+  // option a subcommand does not know goes to its parent. Set before the subcommands
+  // are added, which inherit it; a subcommand's own option of the same name
+  // (`robot add --password-file`: the robot's) still wins.
+  app.fallthrough();
   CliContext ctx(Role::Operator);
   ctx.add_connection_options(app);
   add_map_commands(app, ctx);

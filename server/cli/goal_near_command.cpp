@@ -8,7 +8,6 @@
 
 #include "common/planning/goal_near.h"
 #include "common/planning/planning_scene.h"
-#include "protocol/db_settings.h"
 #include "protocol/fleet_store.h"
 #include "protocol/live_scene.h"
 #include "protocol/map_store.h"
@@ -16,25 +15,11 @@
 #include "protocol/scene_store.h"
 #include "app/exit_codes.h"
 #include "common/core/error.h"
+#include "server/core/goal_check.h"
 #include "server/core/planner_cache.h"
-#include "server/core/server_config.h"
 
 namespace fleetmap {
 namespace {
-
-// The server's defaults for robots without a profile: robot_radius_m and body_height_m
-// of the config file's [server] section (etc/fleetmap.conf.sample), else ServerConfig's.
-PlannerProfile profile_of(const RobotWhereabouts& w) {
-  ServerConfig defaults;
-  try {
-    const DbSettings s = load_settings(Role::Server, find_config_file());
-    if (auto it = s.program.find("robot_radius_m"); it != s.program.end()) defaults.robot_radius_m = std::stod(it->second);
-    if (auto it = s.program.find("body_height_m"); it != s.program.end()) defaults.body_height_m = std::stod(it->second);
-  } catch (const std::exception&) {
-    // No config file, or one the server would refuse too: the built-in defaults.
-  }
-  return {w.radius.value_or(defaults.robot_radius_m), w.body_height.value_or(defaults.body_height_m), w.can_stairs};
-}
 
 int fail(int code, const std::string& message) {
   std::fprintf(stderr, "fleetmap goal: %s\n", message.c_str());
@@ -60,6 +45,7 @@ void add_goal_near_options(CLI::App& cmd, GoalNearArgs& args) {
 int assign_goal_near(CliContext& ctx, const std::string& robot, const GoalNearArgs& args) {
   mysqlpp::Connection& c = ctx.connection();
   const RobotWhereabouts w = robot_whereabouts(c, robot);  // RobotNotFound: exit 4
+  refuse_if_lost(w, robot, "a goal beside " + args.tag);   // GoalRefused: exit 3
   if (!args.map.empty() && args.map != w.map)
     throw BadInput("--map: robot '" + robot + "' works on map '" + w.map + "', not '" + args.map +
                                 "'; its goals are in its own map's frame");
@@ -82,7 +68,7 @@ int assign_goal_near(CliContext& ctx, const std::string& robot, const GoalNearAr
     if (o.id == object.key)
       for (const Element& e : o.elements) footprints.push_back(e.footprint);
   if (footprints.empty()) return fail(exit_code::kNotFound, "object '" + object.key + "' is gone (it expired)");
-  const PlannerProfile profile = profile_of(w);
+  const PlannerProfile profile = planner_profile(w, planning_defaults(ctx.config_path()));
   const PlannerOptions options = server_planner_options(profile);
   const Map map = MapStore(c).load(w.map);
   const MapPlanner planner(map, planning_obstacles(map, scene, profile.body_height, options.robot), options);

@@ -26,6 +26,7 @@
 #include "server/cli/map_export_command.h"
 #include "server/cli/gis_publish.h"
 #include "server/cli/gis_import.h"
+#include "server/cli/list_json.h"
 #include "server/cli/map_source.h"
 
 namespace fleetmap {
@@ -189,10 +190,16 @@ void add_map_import(CLI::App& map, CliContext& ctx) {
 }
 
 // map list
-struct MapListArgs {};
+struct MapListArgs {
+  bool json = false;
+};
 
-int run_map_list(const MapListArgs&, CliContext& ctx) {
+int run_map_list(const MapListArgs& a, CliContext& ctx) {
   MapStore store(ctx.connection());
+  if (a.json) {
+    std::printf("%s\n", maps_json(store.list()).dump().c_str());
+    return exit_code::kOk;
+  }
   std::printf("%-24s %9s %9s  %-44s %s\n", "NAME", "OBSTACLES", "SEGMENTS", "BORDER (mx1,my1)-(mx4,my4)", "IMPORTED");
   for (const MapInfo& i : store.list()) {
     char border[96];
@@ -204,8 +211,10 @@ int run_map_list(const MapListArgs&, CliContext& ctx) {
 }
 
 void add_map_list(CLI::App& map, CliContext& ctx) {
+  auto a = std::make_shared<MapListArgs>();
   auto* cmd = map.add_subcommand("list", "list stored maps");
-  run_with(*cmd, std::make_shared<MapListArgs>(), ctx, run_map_list);
+  cmd->add_flag("--json", a->json, "a JSON array, one object per map (server/cli/list_json.h)");
+  run_with(*cmd, a, ctx, run_map_list);
 }
 
 // map delete NAME

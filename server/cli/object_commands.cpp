@@ -7,6 +7,8 @@
 #include <set>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "common/geometry/number_format.h"
 #include "common/io/scene_geojson.h"
 #include "server/cli/gis_export.h"
@@ -33,8 +35,23 @@ void check_point(double x, double y) {
   if (!std::isfinite(x) || !std::isfinite(y)) throw BadInput("expected finite coordinates X Y");
 }
 
+// --json of 'objects list' and 'near': the table's columns, numbers as numbers, '-' as null.
+void print_objects_json(const std::vector<ObjectRow>& rows) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const ObjectRow& o : rows) {
+    nlohmann::json observed;  // null unless a robot saw it
+    if (o.source == "observed") observed = {{"robot", o.robot}, {"label", o.label}};
+    out.push_back({{"key", o.key}, {"tag", o.tag}, {"class", o.tag_class}, {"dynamic", o.dynamic},
+                   {"source", o.source}, {"observed", observed}, {"seen_at", o.seen_at},
+                   {"expires_at", o.expires_at.empty() ? nlohmann::json() : nlohmann::json(o.expires_at)},
+                   {"elements", o.elements}, {"distance", o.distance ? nlohmann::json(*o.distance) : nlohmann::json()}});
+  }
+  std::cout << out.dump() << std::endl;
+}
+
 // One object per line, tab-separated under a header: what 'objects list' and 'near' print.
-void print_objects(const std::vector<ObjectRow>& rows) {
+void print_objects(const std::vector<ObjectRow>& rows, bool json = false) {
+  if (json) return print_objects_json(rows);
   std::printf("key\ttag\tclass\tdynamic\tsource\tseen_at\texpires_at\telements\tdistance\n");
   for (const ObjectRow& o : rows) {
     const std::string source = o.source == "observed" ? "observed by " + o.robot + " (" + o.label + ")" : o.source;
@@ -44,6 +61,11 @@ void print_objects(const std::vector<ObjectRow>& rows) {
                 o.distance ? format_number(*o.distance).c_str() : "-");
   }
 }
+
+// MAP KEY: one object or avoided area of a stored map (remove).
+struct SceneKeyArgs {
+  std::string map, key;
+};
 
 // objects import MAP FILE: a GeoJSON scene into a stored map, one transaction.
 struct ObjectsImportArgs {
@@ -126,6 +148,7 @@ void add_objects_export(CLI::App& objects, CliContext& ctx) {
 struct ObjectsListArgs {
   std::string map, tag;
   std::vector<double> within;
+  bool json = false;
 };
 
 int run_objects_list(const ObjectsListArgs& a, CliContext& ctx) {
@@ -138,7 +161,7 @@ int run_objects_list(const ObjectsListArgs& a, CliContext& ctx) {
     f.centre = Point{a.within[0], a.within[1]};
     f.radius = a.within[2];
   }
-  print_objects(SceneStore(ctx.connection()).list(a.map, f));
+  print_objects(SceneStore(ctx.connection()).list(a.map, f), a.json);
   return exit_code::kOk;
 }
 
@@ -152,6 +175,7 @@ void add_objects_list(CLI::App& objects, CliContext& ctx) {
   cmd->add_option("--within", a->within, "X Y R: only objects whose footprint comes within R metres of (X, Y)")
       ->expected(3)
       ->allow_extra_args(false);
+  cmd->add_flag("--json", a->json, "a JSON array instead of the table");
   run_with(*cmd, a, ctx, run_objects_list);
 }
 
@@ -160,11 +184,12 @@ struct ObjectsNearArgs {
   std::string map, tag;
   double x = 0, y = 0;
   int k = 1;
+  bool json = false;
 };
 
 int run_objects_near(const ObjectsNearArgs& a, CliContext& ctx) {
   check_point(a.x, a.y);
-  print_objects(SceneStore(ctx.connection()).near(a.map, {a.x, a.y}, a.tag, static_cast<size_t>(a.k)));
+  print_objects(SceneStore(ctx.connection()).near(a.map, {a.x, a.y}, a.tag, static_cast<size_t>(a.k)), a.json);
   return exit_code::kOk;
 }
 
@@ -178,18 +203,39 @@ void add_objects_near(CLI::App& objects, CliContext& ctx) {
   cmd->add_option("Y", a->y, "y (m)")->required();
   cmd->add_option("--tag", a->tag, "tag of the objects sought, e.g. door")->required();
   cmd->add_option("-k", a->k, "how many")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_flag("--json", a->json, "a JSON array instead of the table");
   run_with(*cmd, a, ctx, run_objects_near);
+}
+
+// objects remove MAP KEY
+int run_objects_remove(const SceneKeyArgs& a, CliContext& ctx) {
+  if (!SceneStore(ctx.connection()).remove_object(a.map, a.key))
+    throw NotFound("map '" + a.map + "' has no object '" + a.key + "' (fleetmap objects list " + a.map + ")");
+  std::printf("object '%s' removed from '%s'\n", a.key.c_str(), a.map.c_str());
+  return exit_code::kOk;
+}
+
+void add_objects_remove(CLI::App& objects, CliContext& ctx) {
+  auto a = std::make_shared<SceneKeyArgs>();
+  auto* cmd = objects.add_subcommand(
+      "remove", "delete one object of a stored map (imported or observed), with its elements; the robots' maps "
+                "and plans no longer show it");
+  cmd->add_option("MAP", a->map, "name of a stored map")->required();
+  cmd->add_option("KEY", a->key, "the object's key (objects list)")->required();
+  run_with(*cmd, a, ctx, run_objects_remove);
 }
 
 void add_objects(CLI::App& app, CliContext& ctx) {
   auto* objects = app.add_subcommand("objects", "the semantic layer: objects with tags and footprints on a stored map");
   objects->require_subcommand(1);
   objects->footer("Exit codes: 0 ok, 1 failure (database, I/O), 2 malformed file or argument, "
-                  "4 unknown map, or an object key that exists (import without --replace), 64 usage.");
+                  "4 unknown map, an object key that exists (import without --replace) or no such key (remove), "
+                  "64 usage.");
   add_objects_import(*objects, ctx);
   add_objects_export(*objects, ctx);
   add_objects_list(*objects, ctx);
   add_objects_near(*objects, ctx);
+  add_objects_remove(*objects, ctx);
 }
 
 // tags list
@@ -288,9 +334,17 @@ void add_avoid_add(CLI::App& avoid, CliContext& ctx) {
 // avoid list MAP
 struct AvoidListArgs {
   std::string map;
+  bool json = false;
 };
 
 int run_avoid_list(const AvoidListArgs& a, CliContext& ctx) {
+  if (a.json) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const AvoidedArea& area : SceneStore(ctx.connection()).avoided_areas(a.map))
+      out.push_back({{"key", area.id}, {"wkt", polygon_to_wkt(area.area)}});
+    std::cout << out.dump() << std::endl;
+    return exit_code::kOk;
+  }
   for (const AvoidedArea& area : SceneStore(ctx.connection()).avoided_areas(a.map))
     std::printf("%s\t%s\n", area.id.c_str(), polygon_to_wkt(area.area).c_str());
   return exit_code::kOk;
@@ -300,6 +354,7 @@ void add_avoid_list(CLI::App& avoid, CliContext& ctx) {
   auto a = std::make_shared<AvoidListArgs>();
   auto* cmd = avoid.add_subcommand("list", "a map's avoided areas, tab-separated: key, WKT");
   cmd->add_option("MAP", a->map, "name of a stored map")->required();
+  cmd->add_flag("--json", a->json, "a JSON array of {key, wkt}");
   run_with(*cmd, a, ctx, run_avoid_list);
 }
 
@@ -326,13 +381,31 @@ void add_avoid_at(CLI::App& avoid, CliContext& ctx) {
   run_with(*cmd, a, ctx, run_avoid_at);
 }
 
+// avoid remove MAP KEY
+int run_avoid_remove(const SceneKeyArgs& a, CliContext& ctx) {
+  if (!SceneStore(ctx.connection()).remove_avoided_area(a.map, a.key))
+    throw NotFound("map '" + a.map + "' has no avoided area '" + a.key + "' (fleetmap avoid list " + a.map + ")");
+  std::printf("avoided area '%s' removed from '%s'\n", a.key.c_str(), a.map.c_str());
+  return exit_code::kOk;
+}
+
+void add_avoid_remove(CLI::App& avoid, CliContext& ctx) {
+  auto a = std::make_shared<SceneKeyArgs>();
+  auto* cmd = avoid.add_subcommand("remove", "delete one avoided area of a stored map; robots may enter it again");
+  cmd->add_option("MAP", a->map, "name of a stored map")->required();
+  cmd->add_option("KEY", a->key, "the area's key (avoid list)")->required();
+  run_with(*cmd, a, ctx, run_avoid_remove);
+}
+
 void add_avoid(CLI::App& app, CliContext& ctx) {
   auto* avoid = app.add_subcommand("avoid", "avoided areas: polygons no robot may enter (columns, keep-out zones)");
   avoid->require_subcommand(1);
-  avoid->footer("Exit codes: 0 ok, 1 failure, 2 malformed polygon or argument, 4 unknown map or key exists, 64 usage.");
+  avoid->footer("Exit codes: 0 ok, 1 failure, 2 malformed polygon or argument, 4 unknown map, key exists (add) or "
+                "no such key (remove), 64 usage.");
   add_avoid_add(*avoid, ctx);
   add_avoid_list(*avoid, ctx);
   add_avoid_at(*avoid, ctx);
+  add_avoid_remove(*avoid, ctx);
 }
 
 }  // namespace

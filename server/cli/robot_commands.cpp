@@ -1,13 +1,20 @@
 #include "server/cli/robot_commands.h"
 
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <random>
 #include <regex>
 #include <sstream>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +28,7 @@
 #include "server/cli/gis_export.h"
 #include "server/cli/goal_near_command.h"
 #include "server/cli/map_source.h"
+#include "server/core/goal_check.h"
 
 namespace fleetmap {
 namespace {
@@ -102,6 +110,11 @@ RobotProfileChange profile_change(const ProfileOptions& o) {
 
 std::string metres(const std::optional<double>& v) { return v ? opt(v, "%g") : "default"; }
 
+// --json: numbers as numbers, what is unknown as null (the table's '-').
+nlohmann::json number_or_null(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(); }
+
+void print_json(const nlohmann::json& j) { std::cout << j.dump() << std::endl; }
+
 // robot add NAME --map MAP: the robot's own account, its id and its whole profile.
 struct RobotAddArgs {
   std::string name, map, password_file, password_out;
@@ -152,12 +165,26 @@ void add_robot_add(CLI::App& robot, CliContext& ctx) {
   run_with(*cmd, a, ctx, run_robot_add);
 }
 
-// robot list
-struct RobotListArgs {};
+// robot list [--json]
+struct RobotListArgs {
+  bool json = false;
+};
 
-int run_robot_list(const RobotListArgs&, CliContext& ctx) {
+int run_robot_list(const RobotListArgs& a, CliContext& ctx) {
   FleetStore fleet(ctx.connection());
   const std::map<std::string, RobotProfile> profiles = fleet.profiles();
+  if (a.json) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const RobotStatus& s : fleet.status()) {
+      auto it = profiles.find(s.name);
+      const RobotProfile p = it == profiles.end() ? RobotProfile{} : it->second;
+      out.push_back({{"id", s.id}, {"name", s.name}, {"map", s.map}, {"state", std::string(to_string(s.state))},
+                     {"laser_height", number_or_null(p.laser_height)}, {"radius", number_or_null(p.radius)},
+                     {"height", number_or_null(p.body_height)}, {"stairs", p.can_stairs}, {"ramps", p.can_ramps}});
+    }
+    print_json(out);  // null: the server's default
+    return exit_code::kOk;
+  }
   std::printf("%-6s %-20s %-20s %-9s %-8s %-8s %-8s %-6s %-5s\n", "ID", "NAME", "MAP", "STATE", "LASER", "RADIUS",
               "HEIGHT", "STAIRS", "RAMPS");
   for (const RobotStatus& s : fleet.status()) {
@@ -171,8 +198,10 @@ int run_robot_list(const RobotListArgs&, CliContext& ctx) {
 }
 
 void add_robot_list(CLI::App& robot, CliContext& ctx) {
+  auto a = std::make_shared<RobotListArgs>();
   auto* cmd = robot.add_subcommand("list", "list registered robots and their profiles ('default': the server's)");
-  run_with(*cmd, std::make_shared<RobotListArgs>(), ctx, run_robot_list);
+  cmd->add_flag("--json", a->json, "a JSON array, one object per robot (null: the server's default)");
+  run_with(*cmd, a, ctx, run_robot_list);
 }
 
 // robot set NAME --radius R ...: a profile change; its next map (Ready, GetMap) follows it.
@@ -221,26 +250,88 @@ void add_robot_remove(CLI::App& robot, CliContext& ctx) {
   run_with(*cmd, a, ctx, run_robot_remove);
 }
 
-// robots: the status table.
-struct RobotsArgs {};
+// robots [--json] [--watch S [--count N]]: the status table.
+struct RobotsArgs {
+  bool json = false;
+  double watch_s = 0;  // 0: once
+  int count = 0;       // with --watch: stop after this many refreshes (0: until Ctrl-C)
+};
 
-int run_robots(const RobotsArgs&, CliContext& ctx) {
-  FleetStore fleet(ctx.connection());
+nlohmann::json robots_json(const std::vector<RobotStatus>& all) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const RobotStatus& s : all) {
+    nlohmann::json task;  // null without one
+    if (s.task_id)
+      task = {{"id", *s.task_id},
+              {"state", s.task_state ? nlohmann::json(std::string(to_string(*s.task_state))) : nlohmann::json()},
+              {"goal", s.goal_x && s.goal_y ? nlohmann::json{*s.goal_x, *s.goal_y} : nlohmann::json()}};
+    out.push_back({{"robot", s.name}, {"state", std::string(to_string(s.state))}, {"x", number_or_null(s.x)},
+                   {"y", number_or_null(s.y)}, {"theta", number_or_null(s.theta)}, {"v", number_or_null(s.v)},
+                   {"last_seen", s.last_seen.empty() ? nlohmann::json() : nlohmann::json(s.last_seen)},
+                   {"task", task}});
+  }
+  return out;
+}
+
+void print_robots_table(const std::vector<RobotStatus>& all) {
   std::printf("%-16s %-8s %9s %9s %7s %6s  %-26s %-6s %-12s %s\n", "ROBOT", "STATE", "X", "Y", "THETA", "V",
               "LAST SEEN", "TASK", "TASK STATE", "GOAL");
-  for (const RobotStatus& s : fleet.status()) {
+  for (const RobotStatus& s : all) {
     const std::string goal = s.goal_x ? "(" + opt(s.goal_x) + ", " + opt(s.goal_y) + ")" : "-";
     std::printf("%-16s %-8s %9s %9s %7s %6s  %-26s %-6s %-12s %s\n", s.name.c_str(), std::string(to_string(s.state)).c_str(), opt(s.x).c_str(),
                 opt(s.y).c_str(), opt(s.theta).c_str(), opt(s.v).c_str(), s.last_seen.empty() ? "-" : s.last_seen.c_str(),
                 s.task_id ? std::to_string(*s.task_id).c_str() : "-", s.task_state ? std::string(to_string(*s.task_state)).c_str() : "-",
                 goal.c_str());
   }
+}
+
+std::atomic<bool> g_watch_stop{false};
+extern "C" void stop_watching(int) { g_watch_stop = true; }
+
+int run_robots(const RobotsArgs& a, CliContext& ctx) {
+  FleetStore fleet(ctx.connection());
+  if (a.watch_s <= 0) {
+    if (a.json) print_json(robots_json(fleet.status()));
+    else print_robots_table(fleet.status());
+    return exit_code::kOk;
+  }
+  // Until Ctrl-C (exit 0) or --count refreshes. On a terminal the screen is redrawn; to
+  // a pipe or file each refresh is appended (a timestamp line, then the table; with
+  // --json one array per line), so a log of it reads back in order.
+  std::signal(SIGINT, stop_watching);
+  std::signal(SIGTERM, stop_watching);
+  const bool tty = isatty(fileno(stdout)) != 0;
+  for (int n = 1; !g_watch_stop; ++n) {
+    const std::vector<RobotStatus> all = fleet.status();
+    if (a.json) {
+      print_json(robots_json(all));
+    } else {
+      const std::time_t now = std::time(nullptr);
+      char at[32];
+      std::strftime(at, sizeof at, "%Y-%m-%d %H:%M:%S", std::localtime(&now));
+      if (tty) std::printf("\033[H\033[2J");
+      std::printf("%s  every %g s%s\n", at, a.watch_s, tty ? "; Ctrl-C to stop" : "");
+      print_robots_table(all);
+      if (!tty) std::printf("\n");
+      std::fflush(stdout);
+    }
+    if (a.count > 0 && n >= a.count) break;
+    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(a.watch_s);
+    while (!g_watch_stop && std::chrono::steady_clock::now() < until)
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
   return exit_code::kOk;
 }
 
 void add_robots(CLI::App& app, CliContext& ctx) {
+  auto a = std::make_shared<RobotsArgs>();
   auto* cmd = app.add_subcommand("robots", "status table: state, last pose, last seen, task");
-  run_with(*cmd, std::make_shared<RobotsArgs>(), ctx, run_robots);
+  cmd->add_flag("--json", a->json, "a JSON array, one object per robot (null: unknown)");
+  auto* watch = cmd->add_option("--watch", a->watch_s, "refresh every S seconds until Ctrl-C (to a pipe: appended)")
+                    ->type_name("S")
+                    ->check(CLI::Range(0.1, 3600.0));
+  cmd->add_option("--count", a->count, "with --watch: stop after N refreshes")->needs(watch)->check(CLI::PositiveNumber);
+  run_with(*cmd, a, ctx, run_robots);
 }
 
 // goal ROBOT X Y | goal ROBOT --near TAG: a task; the server pushes SetPosEnd.
@@ -254,8 +345,15 @@ int run_goal(const GoalArgs& a, CliContext& ctx) {
   if (a.xy.empty() == a.near.tag.empty()) throw CLI::ValidationError("expected X Y or --near TAG (one of them)");
   if (!a.near.tag.empty()) return assign_goal_near(ctx, a.robot, a.near);
   finite({a.xy[0], a.xy[1]});
-  const auto task = FleetStore(ctx.connection()).assign_goal(a.robot, a.xy[0], a.xy[1]);
-  std::printf("task %llu assigned to '%s': goal (%g, %g)\n", task, a.robot.c_str(), a.xy[0], a.xy[1]);
+  // Refused at once when the robot cannot reach it (GoalRefused: exit 3, no task).
+  const AcceptedGoal g =
+      accept_goal(ctx.connection(), a.robot, {a.xy[0], a.xy[1]}, planning_defaults(ctx.config_path()));
+  std::printf("task %llu assigned to '%s': goal (%g, %g)", g.task, a.robot.c_str(), a.xy[0], a.xy[1]);
+  if (g.check.from)
+    std::printf("; path %.2f m from (%.3f, %.3f)\n", g.check.path_length, g.check.from->x, g.check.from->y);
+  else
+    std::printf("; the robot has no known position yet: only the goal's place was checked, GetPath plans the "
+                "rest\n");
   return exit_code::kOk;
 }
 
@@ -265,10 +363,14 @@ void add_goal(CLI::App& app, CliContext& ctx) {
   cmd->add_option("ROBOT", a->robot, "robot name")->required();
   cmd->add_option("XY", a->xy, "X Y: the goal (m); or --near TAG")->expected(2);
   add_goal_near_options(*cmd, a->near);
-  cmd->footer("With --near TAG the goal is a free point beside the nearest object with that tag, reachable from the "
-              "robot's last pose (or initial pose) with the server's planner (docs/semantic-layer.md). Exit codes: 0 "
-              "assigned, 2 bad value, 3 no free reachable point beside the object, 4 no such robot, no object with "
-              "the tag, or no known position, 64 usage.");
+  cmd->footer("A goal X Y is refused at once, and no task is created, when it is outside the map, inside an "
+              "obstacle, an object the robot's body cannot pass or an avoided area, or unreachable from the robot's "
+              "last pose (or initial pose) with the server's planner for its profile; a lost robot's goals are "
+              "refused too (give them again once it reports). Without a known position only the goal's place is "
+              "checked. With --near TAG the goal is a free point beside the nearest object with that tag, reachable "
+              "the same way (docs/semantic-layer.md). Exit codes: 0 assigned, 2 bad value, 3 refused (no path, "
+              "goal blocked or outside the map, robot lost; with --near: no free reachable point beside the object), "
+              "4 no such robot, no object with the tag, or (--near) no known position, 64 usage.");
   run_with(*cmd, a, ctx, run_goal);
 }
 
@@ -322,11 +424,20 @@ void add_abort(CLI::App& app, CliContext& ctx) {
 struct TasksArgs {
   std::string robot;
   size_t limit = 50;
+  bool json = false;
 };
 
 int run_tasks(const TasksArgs& a, CliContext& ctx) {
   std::optional<std::string> r;
   if (!a.robot.empty()) r = a.robot;
+  if (a.json) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const TaskInfo& t : FleetStore(ctx.connection()).tasks(r, a.limit))
+      out.push_back({{"id", t.id}, {"robot", t.robot}, {"state", std::string(to_string(t.state))}, {"goal", {t.goal_x, t.goal_y}},
+                     {"created_at", t.created_at}, {"updated_at", t.updated_at}, {"reason", t.reason}});
+    print_json(out);
+    return exit_code::kOk;
+  }
   std::printf("%-6s %-16s %-13s %10s %10s  %-26s %s\n", "TASK", "ROBOT", "STATE", "GOAL X", "GOAL Y", "UPDATED",
               "REASON");
   for (const TaskInfo& t : FleetStore(ctx.connection()).tasks(r, a.limit))
@@ -340,6 +451,7 @@ void add_tasks(CLI::App& app, CliContext& ctx) {
   auto* cmd = app.add_subcommand("tasks", "tasks, newest first");
   cmd->add_option("--robot", a->robot, "only this robot's");
   cmd->add_option("--limit", a->limit, "at most this many")->capture_default_str();
+  cmd->add_flag("--json", a->json, "a JSON array, newest first");
   run_with(*cmd, a, ctx, run_tasks);
 }
 

@@ -7,8 +7,8 @@ namespace fleetmap {
 
 void DbRobotRecords::start_session(unsigned robot_id, long long magic) { robots_.start_session(robot_id, magic); }
 
-void DbRobotRecords::set_task_state(unsigned long long task_id, TaskState state) {
-  robots_.set_task_state(task_id, state);
+void DbRobotRecords::set_task_state(unsigned long long task_id, TaskState state, const std::string& reason) {
+  robots_.set_task_state(task_id, state, reason);
 }
 
 std::optional<TaskRow> DbRobotRecords::task_pushed_as(unsigned robot_id, unsigned long long answer_id) {

@@ -22,7 +22,7 @@ class DbRobotRecords : public RobotRecords {
   explicit DbRobotRecords(mysqlpp::Connection& c) : c_(c), robots_(c) {}
 
   void start_session(unsigned robot_id, long long magic) override;
-  void set_task_state(unsigned long long task_id, TaskState state) override;
+  void set_task_state(unsigned long long task_id, TaskState state, const std::string& reason) override;
   std::optional<TaskRow> task_pushed_as(unsigned robot_id, unsigned long long answer_id) override;
   void record_image(unsigned robot_id, const SendImageParams& p, const std::string& data,
                     const std::string& at) override;

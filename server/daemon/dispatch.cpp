@@ -10,6 +10,7 @@ RequestWrites error_answer(const RobotRow& robot, const Request& request, ErrorC
   RequestWrites w;
   w.answers.push_back({robot.id, robot.db_user, request.id, AnswerOp::Error,
                        encode(ErrorParams{request.id, code, message}), std::nullopt});
+  w.refused = true;
   return w;
 }
 

@@ -9,6 +9,7 @@
 
 #include "protocol/connection.h"
 #include "protocol/ops.h"
+#include "server/daemon/database_outage.h"
 #include "server/daemon/db_handler_stores.h"
 #include "server/daemon/dispatch.h"
 
@@ -58,18 +59,24 @@ RequestLoop::RequestLoop(DbSettings db, const ServerConfig& config, MapCache& ca
       housekeeping_(housekeeping) {}
 
 void RequestLoop::connect_with_retry() {
-  double wait_s = 0.1;
+  RetryBackoff backoff;
+  DatabaseOutage& outage = DatabaseOutage::shared();
   while (!stop_) {
     try {
       conn_ = connect(db_, multi_statements_);
       // Wait on a lock only briefly: a robot holding sa locks must not stall everyone (SPEC 5.3).
       execute(*conn_, "SET SESSION innodb_lock_wait_timeout = " + std::to_string(config_.lock_wait_timeout_s));
+      if (outage.end()) spdlog::info("database reachable again");
       spdlog::info("worker {}: connected as {}", worker_, describe(db_));
       return;
     } catch (const std::exception& e) {
-      spdlog::warn("worker {}: {}; retrying in {:.1f} s", worker_, e.what(), wait_s);
+      const double wait_s = backoff.next_wait_s();
+      // One line per back-off step for the process, not one per worker and attempt.
+      if (outage.report(DatabaseOutage::Clock::now()))
+        spdlog::warn("{}; retrying (every {:.1f} s at most)", e.what(), DatabaseOutage::kLastStepS);
+      else
+        spdlog::debug("worker {}: {}; retrying in {:.1f} s", worker_, e.what(), wait_s);
       std::this_thread::sleep_for(std::chrono::duration<double>(wait_s));
-      wait_s = std::min(wait_s * 2, 5.0);
     }
   }
 }
@@ -201,10 +208,9 @@ RequestWrites RequestLoop::handle(ServedRobot& served, const Request& req, Robot
   const RobotRow& robot = before.robot;
   try {
     RequestWrites w = dispatch(config_, records, maps, served, req);
-    // An Error answer: the handler wrote nothing directly (handler.h); in a savepoint,
-    // make sure of it.
-    if (careful && !w.answers.empty() && w.answers.back().op == AnswerOp::Error)
-      execute(*conn_, "ROLLBACK TO SAVEPOINT request");
+    // A refusal: the handler wrote nothing directly (handler.h); in a savepoint, make
+    // sure of it.
+    if (careful && w.refused) execute(*conn_, "ROLLBACK TO SAVEPOINT request");
     return w;
   } catch (const mysqlpp::BadQuery& e) {
     // Fast mode: no savepoint to go back to; the batch goes again carefully (serve_batch).

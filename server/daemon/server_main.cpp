@@ -72,6 +72,9 @@ int main(int argc, char** argv) {
       return exit_code::kOk;
     }
 
+    // No account (no config file found): exit 1 at once; an unreachable database is
+    // waited for (request_loop.h), logged once per back-off step.
+    check_account(db);
     std::signal(SIGTERM, on_signal);
     std::signal(SIGINT, on_signal);
     spdlog::info("fleetmap-server starting: {} worker(s), database {}", cfg.workers, describe(db));

@@ -8,16 +8,28 @@
 
 #include "protocol/connection.h"
 #include "protocol/sql_util.h"
+#include "server/daemon/database_outage.h"
 
 namespace fleetmap {
 
 void StallGuard::run() {
   std::unique_ptr<mysqlpp::Connection> conn;
   std::set<unsigned long long> seen_last;  // blocking robot threads seen at the previous look
+  RetryBackoff backoff;
   while (!stop_) {
     std::this_thread::sleep_for(period_);
+    if (!conn) {
+      try {
+        conn = connect(db_);
+        backoff.reset();
+      } catch (const DbError& e) {
+        // The workers' back-off, and the process's one line per step (database_outage.h).
+        if (DatabaseOutage::shared().report(DatabaseOutage::Clock::now())) spdlog::warn("stall guard: {}", e.what());
+        std::this_thread::sleep_for(std::chrono::duration<double>(backoff.next_wait_s()));
+        continue;
+      }
+    }
     try {
-      if (!conn) conn = connect(db_);
       mysqlpp::Query q = conn->query();
       q << "SELECT DISTINCT b.trx_mysql_thread_id, pb.USER, b.trx_started"
            " FROM information_schema.INNODB_LOCK_WAITS w"
@@ -45,8 +57,6 @@ void StallGuard::run() {
     } catch (const mysqlpp::Exception& e) {
       spdlog::warn("stall guard: {}", e.what());
       conn.reset();
-    } catch (const DbError& e) {
-      spdlog::warn("stall guard: {}", e.what());
     }
   }
 }

@@ -21,6 +21,11 @@ class ReferenceRobot : public ::testing::Test {
     ensure_example_map("proto_map");
     password_ = add_robot("proto_r1", "proto_map");
     robot_id_ = static_cast<unsigned>(scalar("SELECT id FROM robots WHERE db_user = 'proto_r1'"));
+    // Observations of earlier tests (SetObject's door) live on in the map's scene, where
+    // goals are checked and paths planned: each test starts without them.
+    admin()->query("DELETE FROM env_objects WHERE source = 'observed' AND map_id = "
+                   "(SELECT id FROM maps WHERE name = 'proto_map')").execute();
+    admin()->query("DELETE FROM avoided_areas WHERE area_key = 'proto_late'").execute();
     server_ = std::make_unique<ServerProcess>("--alive-period 0.5 --lost-after 4", "proto_server.log");
     robot_ = std::make_unique<SqlRobot>("proto_r1", password_);
   }
@@ -338,7 +343,8 @@ TEST_F(ReferenceRobot, PosesAndTasksFromTheOperator) {
 TEST_F(ReferenceRobot, GetPathPlansFromThePoseToTheGoal) {
   ready();
   expect_error("GetPath", "{}", "no_goal");
-  ASSERT_EQ(run("fleetmap", "goal proto_r1 50 12").exit_code, 0);
+  const RunResult g = run("fleetmap", "goal proto_r1 50 12");
+  ASSERT_EQ(g.exit_code, 0) << g.err;
   auto push = robot_->receive(1);
   ASSERT_EQ(push.size(), 1u);
   robot_->send("OpAck", json{{"answer_id", push[0].id}}.dump());
@@ -358,13 +364,27 @@ TEST_F(ReferenceRobot, GetPathPlansFromThePoseToTheGoal) {
   EXPECT_GE(length, std::hypot(25.0, 4.0) - 1e-9);
   const long long task = scalar("SELECT MAX(id) FROM tasks WHERE robot_id = " + std::to_string(robot_id_));
   EXPECT_EQ(scalar("SELECT state = 'active' FROM tasks WHERE id = " + std::to_string(task)), 1);
-  // A goal inside the closed library (its door is 2.5 m high): no path.
-  ASSERT_EQ(run("fleetmap", "goal proto_r1 12 30").exit_code, 0);
-  push = robot_->receive(1);  // SetPosEnd of the new task; the replaced one is aborted, no push
-  ASSERT_EQ(push.size(), 1u);
-  EXPECT_EQ(push[0].op, "SetPosEnd");
-  EXPECT_EQ(scalar("SELECT state = 'aborted' FROM tasks WHERE id = " + std::to_string(task)), 1);
+  // A goal inside the closed library (its door is 2.5 m high) is refused by the operator's
+  // command: exit 3, no task, the active one stays.
+  const RunResult library = run("fleetmap", "goal proto_r1 12 30");
+  EXPECT_EQ(library.exit_code, 3) << library.out << library.err;
+  EXPECT_NE(library.err.find("inside obstacle 1 (building,library)"), std::string::npos) << library.err;
+  EXPECT_EQ(scalar("SELECT MAX(id) FROM tasks WHERE robot_id = " + std::to_string(robot_id_)), task);
+  // An avoided area drawn over the goal after it was given: GetPath finds no path, the
+  // task fails with the reason, and the robot has no open task left.
+  ASSERT_EQ(run("fleetmap", "avoid add proto_map --id proto_late --wkt 'POLYGON((49 11, 51 11, 51 13, 49 13, 49 11))'")
+                .exit_code,
+            0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));  // RobotMapSource::kRecheck
   expect_error("GetPath", "{}", "no_path");
+  EXPECT_EQ(run("fleetmap", "avoid remove proto_map proto_late").exit_code, 0);
+  EXPECT_EQ(scalar("SELECT state = 'failed' FROM tasks WHERE id = " + std::to_string(task)), 1);
+  auto c = admin();
+  const std::string reason =
+      std::string(c->query("SELECT reason FROM tasks WHERE id = " + std::to_string(task)).store()[0][0]);
+  EXPECT_NE(reason.find("no path to (50.000000, 12.000000): the goal is inside avoid:proto_late"), std::string::npos)
+      << reason;
+  expect_error("GetPath", "{}", "no_goal");
 }
 
 TEST_F(ReferenceRobot, SilentRobotIsLostItsTaskFailsAndItComesBack) {

@@ -36,7 +36,10 @@ const std::map<std::pair<std::string, TaskEvent>, std::string>& legal() {
       {{"assigned", TaskEvent::Replaced}, "aborted"},
       {{"acknowledged", TaskEvent::Replaced}, "aborted"},
       {{"active", TaskEvent::Replaced}, "aborted"},
-      // A lost or removed robot fails its open task (robot_remove: 'robot removed').
+      // GetPath's no_path, a lost or removed robot: the open task fails (robot_remove: 'robot removed').
+      {{"assigned", TaskEvent::NoPath}, "failed"},
+      {{"acknowledged", TaskEvent::NoPath}, "failed"},
+      {{"active", TaskEvent::NoPath}, "failed"},
       {{"assigned", TaskEvent::RobotLost}, "failed"},
       {{"acknowledged", TaskEvent::RobotLost}, "failed"},
       {{"active", TaskEvent::RobotLost}, "failed"},
@@ -73,8 +76,8 @@ TEST(TaskLifecycle, EveryOtherStateAndEventPairIsRefused) {
       EXPECT_THROW(t.next(), std::logic_error);
       ++refused;
     }
-  // 6 states x 9 events, 20 legal.
-  EXPECT_EQ(refused, 6u * 9u - 20u);
+  // 6 states x 10 events, 23 legal.
+  EXPECT_EQ(refused, 6u * 10u - 23u);
 }
 
 TEST(TaskLifecycle, FinishedTasksStayFinished) {

@@ -2,7 +2,9 @@
 // of its open task, planned on the whole map for the robot's profile (radius, body
 // height, stairs; the server's defaults where the profile has none), keeping clear of
 // the objects its body cannot pass and of every avoided area (common/planning/planning_scene.h);
-// RRT-Connect + smoothing. The task becomes active (TaskEvent::PathPlanned).
+// RRT-Connect + smoothing. The task becomes active (TaskEvent::PathPlanned). No path:
+// the task fails with the reason (TaskEvent::NoPath), and the answer is the no_path Error,
+// so that the robot stops instead of guessing a way (client/sim/sim_robot.cpp).
 #include <stdexcept>
 
 #include "server/daemon/handlers/handler.h"
@@ -37,8 +39,13 @@ void handle_get_path(HandlerContext& ctx) {
     };
     if (r.status == PlanStatus::StartBlocked) why = near("the robot's pose");
     if (r.status == PlanStatus::GoalBlocked) why = near("the goal");
-    throw ProtocolError(ErrorCode::NoPath, "no path to (" + std::to_string(task->goal_x) + ", " +
-                                               std::to_string(task->goal_y) + "): " + why);
+    const std::string message =
+        "no path to (" + std::to_string(task->goal_x) + ", " + std::to_string(task->goal_y) + "): " + why;
+    // Not a refusal of the request: the task's failure is written (handler.h), so the
+    // Error is answered, not thrown.
+    ctx.task_event(*task, TaskEvent::NoPath, message);
+    ctx.answer(AnswerOp::Error, encode(ErrorParams{ctx.request.id, ErrorCode::NoPath, message}));
+    return;
   }
   ctx.answer(AnswerOp::SetPath, encode(SetPathParams{*r.path, r.length}));
   ctx.task_event(*task, TaskEvent::PathPlanned);  // refused when already active

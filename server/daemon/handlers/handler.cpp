@@ -5,10 +5,10 @@
 
 namespace fleetmap {
 
-bool HandlerContext::task_event(const TaskRow& task, TaskEvent event) {
+bool HandlerContext::task_event(const TaskRow& task, TaskEvent event, const std::string& reason) {
   const TaskTransition t = task_transition(task.state, event);
   if (!t) return false;
-  records.set_task_state(task.id, t.next());
+  records.set_task_state(task.id, t.next(), reason);
   if (served.open_task && served.open_task->id == task.id) {
     if (is_open(t.next())) served.open_task->state = t.next();
     else served.open_task.reset();  // closed: a robot has one open task at most

@@ -57,8 +57,9 @@ struct HandlerContext {
   // The event happened to this task (the robot's open one, or any of its tasks for
   // OpAck): when the life cycle allows it, the new state is written at once and
   // served.open_task kept in step (a closed task is no longer open). Returns whether
-  // the task changed; a refused event leaves it as it is.
-  bool task_event(const TaskRow& task, TaskEvent event);
+  // the task changed; a refused event leaves it as it is. A reason, when not empty, is
+  // stored with the new state (tasks.reason).
+  bool task_event(const TaskRow& task, TaskEvent event, const std::string& reason = "");
 };
 
 using Handler = void (*)(HandlerContext&);

@@ -28,8 +28,9 @@ class RobotRecords {
 
   // A new session (Ready): robots.magic, session_at, state ready.
   virtual void start_session(unsigned robot_id, long long magic) = 0;
-  // tasks.state, as task_transition allowed it (protocol/task_lifecycle.h).
-  virtual void set_task_state(unsigned long long task_id, TaskState state) = 0;
+  // tasks.state, as task_transition allowed it (protocol/task_lifecycle.h); a reason,
+  // when not empty, replaces tasks.reason (why a task failed).
+  virtual void set_task_state(unsigned long long task_id, TaskState state, const std::string& reason) = 0;
   // The robot's task whose SetPosEnd or Abort was pushed as this answer, in any state.
   virtual std::optional<TaskRow> task_pushed_as(unsigned robot_id, unsigned long long answer_id) = 0;
   virtual void record_image(unsigned robot_id, const SendImageParams& p, const std::string& data,

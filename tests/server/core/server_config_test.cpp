@@ -3,7 +3,13 @@
 // with the key and what was expected.
 #include "server/core/server_config.h"
 
+#include <fstream>
+#include <regex>
+#include <sstream>
+
 #include <gtest/gtest.h>
+
+#include "protocol/db_settings.h"
 
 namespace fleetmap {
 namespace {
@@ -36,6 +42,43 @@ TEST(ServerConfig, DefaultsAreTheDocumentedOnes) {
   EXPECT_EQ(c.object_ttl_s, 300);
   EXPECT_EQ(c.lock_wait_timeout_s, 1);
   EXPECT_EQ(c.commit_delay_ms, 0);
+}
+
+TEST(ServerConfig, TheSampleFilesSettingsUncommentedParseToTheDefaults) {
+  // Each "# key = value   # why" of the sample's [server] section, uncommented as an
+  // operator would, keeps its trailing comment: it must parse, and give the default.
+  std::ifstream in(std::string(FLEETMAP_SOURCE_DIR) + "/etc/fleetmap.conf.sample");
+  ASSERT_TRUE(in);
+  std::ostringstream text;
+  static const std::regex kSetting(R"(^# ([a-z_]+ = \S+\s+#.*)$)");
+  std::string line;
+  size_t uncommented = 0;
+  while (std::getline(in, line)) {
+    if (line.rfind("password_file", 0) == 0) continue;  // a file this machine may not have
+    std::smatch m;
+    if (std::regex_match(line, m, kSetting)) {
+      text << m[1] << "\n";
+      ++uncommented;
+    } else {
+      text << line << "\n";
+    }
+  }
+  EXPECT_GE(uncommented, 16u);
+  DbSettings s;
+  apply_config_text(s, Role::Server, text.str(), "fleetmap.conf.sample");
+  EXPECT_EQ(s.program.size(), uncommented);
+  ServerConfig c;
+  c.apply(s.program);
+  const ServerConfig d;
+  EXPECT_EQ(c.alive_period_s, d.alive_period_s);
+  EXPECT_EQ(c.lost_after_periods, d.lost_after_periods);
+  EXPECT_EQ(c.workers, d.workers);
+  EXPECT_EQ(c.poll_max_ms, d.poll_max_ms);
+  EXPECT_EQ(c.max_image_bytes, d.max_image_bytes);
+  EXPECT_EQ(c.goal_tolerance_m, d.goal_tolerance_m);
+  EXPECT_EQ(c.robot_radius_m, d.robot_radius_m);
+  EXPECT_EQ(c.object_ttl_s, d.object_ttl_s);
+  EXPECT_EQ(c.commit_delay_ms, d.commit_delay_ms);
 }
 
 TEST(ServerConfig, EveryKeyOfTheFileIsApplied) {

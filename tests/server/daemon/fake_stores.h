@@ -39,14 +39,16 @@ class FakeRecords : public RobotRecords {
 
   std::map<unsigned, long long> sessions;                 // robot id -> magic
   std::vector<std::pair<unsigned long long, TaskState>> task_states;  // in the order written
+  std::map<unsigned long long, std::string> task_reasons;              // the last reason given, by task
   std::vector<TaskRow> tasks;                              // what task_pushed_as looks in
   std::vector<Image> images;
   std::vector<Object> objects;
   std::vector<Observation> observations;
 
   void start_session(unsigned robot_id, long long magic) override { sessions[robot_id] = magic; }
-  void set_task_state(unsigned long long task_id, TaskState state) override {
+  void set_task_state(unsigned long long task_id, TaskState state, const std::string& reason) override {
     task_states.emplace_back(task_id, state);
+    if (!reason.empty()) task_reasons[task_id] = reason;
     for (TaskRow& t : tasks)
       if (t.id == task_id) t.state = state;
   }

@@ -72,15 +72,20 @@ TEST_F(GetPathTest, WithoutATaskNoGoalWithoutAPoseNoPose) {
   EXPECT_TRUE(b.records.task_states.empty());
 }
 
-TEST_F(GetPathTest, AGoalInsideTheWallIsNoPathNamingTheGoal) {
+TEST_F(GetPathTest, AGoalInsideTheWallIsNoPathAndTheTaskFailsWithTheReason) {
   b.served.open_task->goal_x = 10;
   b.served.open_task->goal_y = 3;
   const RequestWrites w = b.send("GetPath", "{}");
   ASSERT_EQ(error_code(w), "no_path");
-  EXPECT_NE(w.answers[0].params["message"].get<std::string>().find("the goal"), std::string::npos)
-      << w.answers[0].params["message"];
-  EXPECT_TRUE(b.records.task_states.empty());
-  EXPECT_EQ(b.served.open_task->state, TaskState::Acknowledged);
+  const std::string message = w.answers[0].params["message"].get<std::string>();
+  EXPECT_NE(message.find("the goal"), std::string::npos) << message;
+  // Answered, not refused: the task's failure is a direct write the batch must keep.
+  EXPECT_FALSE(w.refused);
+  ASSERT_EQ(b.records.task_states.size(), 1u);
+  EXPECT_EQ(b.records.task_states[0], std::make_pair(3ull, TaskState::Failed));
+  EXPECT_EQ(b.records.task_reasons.at(3), message);
+  EXPECT_FALSE(b.served.open_task);  // failed is final: the robot has no open task now
+  EXPECT_EQ(error_code(b.send("GetPath", "{}")), "no_goal");
 }
 
 TEST_F(GetPathTest, AMapThePlannerCannotTakeIsNoPlanner) {
