@@ -2,8 +2,9 @@
 # The main job, end to end on a private MariaDB: start it, import the real maps, start
 # the map server and three simulated robots on the GDC1 building floor, give them goals,
 # watch them live, abort one task on the way; then the semantic layer on the example room
-# (objects, slices at two laser heights, Nav2 files, a goal by meaning); and end with a
-# summary and a picture of the map with the robots' trajectories (out/demo-GDC1.svg). The database stays up for
+# (objects, slices at two laser heights, Nav2 files, a goal by meaning); then the OSM
+# campus imported through GDAL/OGR, its georeference, SVG and WGS 84 GeoJSON, and a robot
+# driven on it; and end with a summary and a picture of the map with the robots' trajectories (out/demo-GDC1.svg). The database stays up for
 # exploring afterwards:
 #   scripts/db.sh sql        # administrator
 #   scripts/db.sh stop
@@ -12,7 +13,8 @@
 # maps, default ../shared/maps beside the checkout).
 set -euo pipefail
 source "$(dirname "$0")/real-maps.sh"
-require_real_maps demo GDC1.vectormap.txt UT_Campus.vectormap.txt
+require_real_maps demo GDC1.vectormap.txt UT_Campus.vectormap.txt \
+  gis/osm-montgomery-college-rockville/campus.osm
 cd "$(dirname "$0")/.."
 BUILD="${FLEETMAP_BUILD_DIR:-build}"
 BIN="$PWD/$BUILD/bin"
@@ -118,6 +120,54 @@ echo "-- a goal by meaning: robot r4 (laser 0.381 m, radius 0.25 m, 0.6 m tall) 
 "$FM" goal r4 --near charging_station
 "$FM" tasks --robot r4 --limit 1
 
+step "GIS in: the OSM campus (Montgomery College, Rockville) through GDAL/OGR, shown and driven on"
+CAMPUS_OSM="$MAPS/gis/osm-montgomery-college-rockville/campus.osm"
+# The per-layer report: what OGR read, what the built-in OSM rules kept and why the rest
+# was skipped (footways and roads have no rule: they are where robots drive, not walls).
+"$FM" map import "$CAMPUS_OSM" --name campus-osm --replace 2>&1 | grep -v -E '^(reading|importing):'
+echo "-- its georeference (a local Transverse Mercator at the centre of the data):"
+"$FM" map georef campus-osm
+"$FM" map export campus-osm --format geojson -o out/demo-campus-osm.geojson
+echo "-- out/demo-campus-osm.geojson: RFC 7946, WGS 84 lon/lat (opens in any GIS tool)"
+if command -v ogrinfo >/dev/null; then
+  echo "-- the same map read back from the database as GIS layers (<db>_gis, docs/gis-layers.md):"
+  GISCONN="MYSQL:fleetmap_gis,host=127.0.0.1,port=$PORT,user=fleetmap_inspector,password=$IPW"
+  ogrinfo -ro -so "$GISCONN" "campus-osm:segments" 2>/dev/null \
+    | grep -E '^(Layer name|Geometry|Feature Count|Extent|FID Column)|METHOD\[|origin",' | sed 's/^/  /' || true
+fi
+# A robot on the campus: start on the open ground west of the south row of buildings,
+# goal 61 m east-south-east along their south side (both checked free with `fleetmap plan`).
+# It tracks from the operator's initial pose (GetPosIni) with few particles: an outdoor
+# map is large and a tracking filter needs no global spread.
+echo "-- robot c1 on campus-osm: from (-116, -36) to (-60, -60)"
+"$FM" robot remove c1 >/dev/null 2>&1 || true
+"$FM" robot add c1 --map campus-osm --password-out "$FLEETMAP_HOME/robots/c1.pw" | head -n 1
+"$FM" pose-ini c1 -116 -36 -0.4 >/dev/null
+CAMPUS_STARTED="$(date '+%F %T')"
+"$BIN/fleetmap-robot" --config "$CONF" --user c1 --password-file "$FLEETMAP_HOME/robots/c1.pw" \
+  --start -116 -36 -0.4 --tracking-particles 300 --speed 2.0 --seed 5 > out/demo-c1.log 2>&1 &
+PIDS+=($!)
+for i in $(seq 1 30); do
+  grep -q -E "localized after|tracking from" out/demo-c1.log 2>/dev/null && break
+  sleep 1
+done
+(grep -h -E "localized after|tracking from|failed" out/demo-c1.log || true) | sed 's/^/  /'
+"$FM" goal c1 -60 -60
+for i in $(seq 1 $((TIMEOUT / 3))); do
+  sleep 3
+  "$FM" robots | awk 'NR == 1 || $1 == "c1"' | sed "s/^/  $(date +%T) /"
+  open="$(MYSQL_PWD="$IPW" mariadb --no-defaults -h 127.0.0.1 -P "$PORT" -u fleetmap_inspector fleetmap -N -e \
+    "SELECT COUNT(*) FROM v_tasks WHERE robot = 'c1' AND state IN ('assigned','acknowledged','active')")"
+  [ "$open" = 0 ] && break
+done
+"$FM" tasks --robot c1 --limit 1
+(grep -h -E "arrived|bumped|failed" out/demo-c1.log || true) | sed 's/^/  /'
+"$FM" trajectory c1 --since "$CAMPUS_STARTED" > out/demo-c1-trajectory.csv
+awk -F, 'NR == 2 {t0 = $1} NR > 2 {d += sqrt(($2 - px) ^ 2 + ($3 - py) ^ 2)} NR > 1 {px = $2; py = $3; t1 = $1; n++}
+  END {printf "  c1 drove %.1f m: %d poses reported from %s to %s (out/demo-c1-trajectory.csv)\n", d, n, t0, t1}' \
+  out/demo-c1-trajectory.csv
+"$FM" map export campus-osm --format svg --trajectories --since "$CAMPUS_STARTED" -o out/demo-campus-osm.svg
+
 step "summary"
 "$FM" tasks --limit 4
 "$FM" map export GDC1 --format svg --trajectories --since "$STARTED" -o out/demo-GDC1.svg
@@ -125,6 +175,9 @@ for r in r1 r2 r3; do
   echo "  $r: $("$FM" trajectory "$r" --since "$STARTED" | tail -n +2 | wc -l) poses reported; log out/demo-$r.log"
 done
 echo "  picture: out/demo-GDC1.svg (map with the three trajectories); server log: out/demo-server.log"
+echo "  OSM campus: out/demo-campus-osm.svg (with c1's trajectory), out/demo-campus-osm.geojson (WGS 84);"
+echo "  the database as GIS layers for QGIS, ogrinfo, ogr2ogr (docs/gis-layers.md), e.g."
+echo "    ogrinfo -ro -so \"MYSQL:fleetmap_gis,host=127.0.0.1,port=$PORT,user=fleetmap_inspector,password=...\" campus-osm:segments"
 for m in UT_Campus example-campus; do "$FM" map export "$m" --format svg -o "out/$m.svg"; done
 
 step "done: robots and server stopped, the database is still running (scripts/db.sh stop to stop it)"
