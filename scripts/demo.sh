@@ -153,9 +153,10 @@ for i in $(seq 1 30); do
 done
 (grep -h -E "localized after|tracking from|failed" out/demo-c1.log || true) | sed 's/^/  /'
 "$FM" goal c1 -60 -60
+"$FM" robots | head -n 1 | sed 's/^/  time     /'
 for i in $(seq 1 $((TIMEOUT / 3))); do
   sleep 3
-  "$FM" robots | awk 'NR == 1 || $1 == "c1"' | sed "s/^/  $(date +%T) /"
+  "$FM" robots | awk '$1 == "c1"' | sed "s/^/  $(date +%T) /"
   open="$(MYSQL_PWD="$IPW" mariadb --no-defaults -h 127.0.0.1 -P "$PORT" -u fleetmap_inspector fleetmap -N -e \
     "SELECT COUNT(*) FROM v_tasks WHERE robot = 'c1' AND state IN ('assigned','acknowledged','active')")"
   [ "$open" = 0 ] && break

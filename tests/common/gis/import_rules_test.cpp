@@ -78,5 +78,18 @@ TEST(ImportRules, OsmDefaultsFollowTheIssueTable) {
   EXPECT_NE(std::find(keys.begin(), keys.end(), "building:levels"), keys.end());
 }
 
+// Footways, paths and roads are where robots drive (issue table: only steps, walls and
+// barriers are obstacles): no default rule may turn them into walls across the campus.
+TEST(ImportRules, OsmDefaultsLeaveWaysToDriveOnFree) {
+  const ImportRules r = osm_default_rules();
+  for (const char* value : {"footway", "path", "pedestrian", "cycleway", "service", "residential", "track"}) {
+    for (const FeatureRule& f : r.rules) {
+      const bool matches = f.key.empty() || (f.key == "highway" && (f.values.empty() || std::find(f.values.begin(),
+                                                                     f.values.end(), value) != f.values.end()));
+      EXPECT_FALSE(matches && f.action != FeatureAction::Skip) << "highway=" << value << " matches rule " << f.name;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace fleetmap
