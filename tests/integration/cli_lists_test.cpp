@@ -20,7 +20,7 @@ using nlohmann::json;
 class CliLists : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    RunResult r = run("fleetmap", "map import " + source_path("maps/example-room.map") + " --name cl_room --replace");
+    RunResult r = run("fleetmap", "map import " + source_path("maps/example-room.map") + " --name cl_room --replace --drop all");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     r = run("fleetmap", "objects import cl_room " + source_path("maps/example-room.geojson"));
     ASSERT_EQ(r.exit_code, 0) << r.err;

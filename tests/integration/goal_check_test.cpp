@@ -39,7 +39,7 @@ class GoalCheck : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     write_file(temp_path("gc_gap.map"), kGapMap);
-    RunResult r = run("fleetmap", "map import " + temp_path("gc_gap.map") + " --name gc_gap --replace");
+    RunResult r = run("fleetmap", "map import " + temp_path("gc_gap.map") + " --name gc_gap --replace --drop all");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     r = run("fleetmap", "avoid add gc_gap --id keepout --wkt 'POLYGON((2 7, 4 7, 4 9, 2 9, 2 7))'");
     ASSERT_EQ(r.exit_code, 0) << r.err;
