@@ -179,7 +179,6 @@ std::string crs_name(const OGRSpatialReference& srs) {
   return s.empty() ? wkt2(srs) : s;
 }
 
-
 OGRSpatialReference srs_from(const std::string& def, const std::string& what) {
   OGRSpatialReference srs;
   if (srs.SetFromUserInput(def.c_str()) != OGRERR_NONE)
