@@ -161,10 +161,11 @@ void GisLayers::publish(const std::string& name, const std::string& crs_wkt) {
 
   // Closed obstacles as the ring through their segments' start points (consecutive
   // segments share an end, seed 000 section 3), in the map's orientation. FID = ord + 1.
+  // The semantic is TEXT as in `obstacles`: a GIS feature's attributes exceed 1 KiB.
   const std::string points = "GROUP_CONCAT(CONCAT(s.ax, ' ', s.ay) ORDER BY s.ord SEPARATOR ',')";
   const std::string obstacle_columns =
       "fid BIGINT UNSIGNED NOT NULL PRIMARY KEY, obstacle_id INT NOT NULL, ord INT UNSIGNED NOT NULL, "
-      "st TINYINT UNSIGNED NOT NULL, semantic VARCHAR(1024) NOT NULL, segments INT UNSIGNED NOT NULL, "
+      "st TINYINT UNSIGNED NOT NULL, semantic TEXT NOT NULL, segments INT UNSIGNED NOT NULL, "
       "h_min DOUBLE NOT NULL, h_max DOUBLE NOT NULL, ";
   const std::string obstacle_from =
       " FROM obstacles o STRAIGHT_JOIN segments s ON s.map_id = o.map_id AND s.obstacle_ord = o.ord"

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
 
 #include "common/core/error.h"
@@ -76,6 +77,51 @@ std::string map_frame_crs_wkt(const std::string& map_name, const std::optional<M
          coeff("B1", b1, 8640) + coeff("B2", b2, 8641) +
          "],CS[Cartesian,2],AXIS[\"x\",east,ORDER[1],LENGTHUNIT[\"metre\",1]],"
          "AXIS[\"y\",north,ORDER[2],LENGTHUNIT[\"metre\",1]]]";
+}
+
+std::optional<MapGeoref> georef_from_frame_crs(const std::string& wkt) {
+  if (wkt.rfind("DERIVEDPROJCRS[", 0) != 0) return std::nullopt;
+  PJ_CONTEXT* ctx = proj_context_create();
+  proj_log_level(ctx, PJ_LOG_NONE);
+  PJ* crs = proj_create(ctx, wkt.c_str());
+  PJ* base = crs ? proj_get_source_crs(ctx, crs) : nullptr;
+  PJ* conversion = crs ? proj_crs_get_coordoperation(ctx, crs) : nullptr;
+  PJ* cs = crs ? proj_crs_get_coordinate_system(ctx, crs) : nullptr;
+  std::optional<MapGeoref> out;
+  const char* code = nullptr;
+  bool usable = base && conversion && cs && proj_get_type(base) == PJ_TYPE_PROJECTED_CRS &&
+                proj_coordoperation_get_method_info(ctx, conversion, nullptr, nullptr, &code) && code &&
+                std::string(code) == "9624" && proj_cs_get_axis_count(ctx, cs) == 2;
+  for (int i = 0; usable && i < 2; ++i) {
+    double factor = 0;
+    usable = proj_cs_get_axis_info(ctx, cs, i, nullptr, nullptr, nullptr, &factor, nullptr, nullptr, nullptr) &&
+             std::abs(factor - 1) < 1e-12;
+  }
+  std::map<std::string, double> p;
+  for (int i = 0; usable && i < proj_coordoperation_get_param_count(ctx, conversion); ++i) {
+    const char* name = nullptr;
+    double value = 0, factor = 1;
+    if (proj_coordoperation_get_param(ctx, conversion, i, &name, nullptr, nullptr, &value, nullptr, &factor, nullptr,
+                                      nullptr, nullptr, nullptr) &&
+        name)
+      p[name] = value * factor;
+  }
+  usable = usable && p.size() == 6;
+  for (const char* k : {"A0", "A1", "A2", "B0", "B1", "B2"}) usable = usable && p.count(k);
+  const char* base_wkt = usable ? proj_as_wkt(ctx, base, PJ_WKT2_2019, nullptr) : nullptr;
+  if (usable && base_wkt) {
+    // map = R(-theta) (base - t) / k: A1 = B2 = cos/k, A2 = -B1 = sin/k (the writer above).
+    const double a0 = p["A0"], a1 = p["A1"], a2 = p["A2"], b0 = p["B0"], b1 = p["B1"], b2 = p["B2"];
+    const double det = a1 * b2 - a2 * b1, size = std::hypot(a1, a2);
+    if (size > 0 && std::abs(a1 - b2) <= 1e-12 * size && std::abs(a2 + b1) <= 1e-12 * size)
+      out = MapGeoref{base_wkt, (b0 * a2 - a0 * b2) / det, (a0 * b1 - b0 * a1) / det, std::atan2(a2, a1), 1 / size};
+  }
+  proj_destroy(cs);
+  proj_destroy(conversion);
+  proj_destroy(base);
+  proj_destroy(crs);
+  proj_context_destroy(ctx);
+  return out;
 }
 
 }  // namespace fleetmap

@@ -18,6 +18,12 @@ namespace fleetmap {
 // Throws BadInput when the georeference's base CRS is unusable (as GeoTransform does).
 std::string map_frame_crs_wkt(const std::string& map_name, const std::optional<MapGeoref>& georef);
 
+// The reverse of the derived case: a DERIVEDPROJCRS (WKT2) in metres over a projected
+// base whose deriving conversion is an affine (EPSG 9624) similarity gives the
+// georeference {base CRS as WKT2, t, rotation, scale}; anything else gives nothing. So a
+// map taken out through the GIS layers is imported back in its own frame.
+std::optional<MapGeoref> georef_from_frame_crs(const std::string& wkt);
+
 // The engineering CRS of an unreferenced map frame named after the map.
 std::string engineering_crs_wkt(const std::string& map_name);
 

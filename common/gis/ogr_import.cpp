@@ -11,6 +11,7 @@
 #include "common/core/error.h"
 #include "common/gis/feature_attributes.h"
 #include "common/gis/gis_obstacles.h"
+#include "common/gis/map_frame_crs.h"
 #include "common/gis/ogr_source.h"
 #include "common/map/map_validation.h"
 #include "common/scene/scene_validation.h"
@@ -154,15 +155,28 @@ void for_each_point(const OGRGeometry& g, const std::function<void(Point)>& fn) 
     for (const OGRGeometry* p : *g.toGeometryCollection()) for_each_point(*p, fn);
 }
 
+std::string wkt2(const OGRSpatialReference& srs) {
+  char* wkt = nullptr;
+  const char* const options[] = {"FORMAT=WKT2_2019", nullptr};
+  srs.exportToWkt(&wkt, options);
+  std::string s = wkt ? wkt : "";
+  CPLFree(wkt);
+  return s;
+}
+
 std::string crs_name(const OGRSpatialReference& srs) {
   const char* auth = srs.GetAuthorityName(nullptr);
   const char* code = srs.GetAuthorityCode(nullptr);
   if (auth && code) return std::string(auth) + ":" + code;
+  // WKT1 first (what GDAL tools print); a derived projected CRS (a georeferenced map
+  // frame as fleetmap's GIS layers publish it, docs/gis-layers.md) exists only in WKT2.
   char* wkt = nullptr;
+  CPLPushErrorHandler(CPLQuietErrorHandler);
   srs.exportToWkt(&wkt);
+  CPLPopErrorHandler();
   std::string s = wkt ? wkt : "";
   CPLFree(wkt);
-  return s;
+  return s.empty() ? wkt2(srs) : s;
 }
 
 OGRSpatialReference srs_from(const std::string& def, const std::string& what) {
@@ -380,6 +394,10 @@ OgrImport import_ogr(const std::string& source, const OgrImportOptions& opt) {
     if (src->IsProjected() && std::abs(src->GetLinearUnits() - 1.0) < 1e-9) {
       frame = MapGeoref{crs_name(*src), 0, 0, 0, 1};
       rep.frame = "the source's projected CRS " + frame->crs;
+    } else if (const std::optional<MapGeoref> derived = georef_from_frame_crs(wkt2(*src))) {
+      // A map frame as fleetmap's GIS layers publish it: the map comes back in its own frame.
+      frame = derived;
+      rep.frame = "the source's map frame (a derived CRS: its base and a similarity)";
     } else {
       LonLat o;
       if (opt.origin) {

@@ -62,6 +62,34 @@ TEST(MapFrameCrs, RotatedScaledFrameIsDerivedFromItsBase) {
   }
 }
 
+// Read back (a map taken out through the GIS layers and imported again): the base CRS
+// and the similarity given above, to rounding; the base compared by OGR.
+TEST(MapFrameCrs, DerivedFrameReadsBackAsItsBaseAndSimilarity) {
+  const MapGeoref g{"EPSG:26910", 483250.5, 5456120.25, 2.3, 1.0004};
+  const std::optional<MapGeoref> back = georef_from_frame_crs(map_frame_crs_wkt("floor", g));
+  ASSERT_TRUE(back);
+  EXPECT_NEAR(back->tx, g.tx, 1e-6);
+  EXPECT_NEAR(back->ty, g.ty, 1e-6);
+  EXPECT_NEAR(back->rotation, g.rotation, 1e-12);
+  EXPECT_NEAR(back->scale, g.scale, 1e-12);
+  OGRSpatialReference utm;
+  utm.importFromEPSG(26910);
+  EXPECT_TRUE(read(back->crs)->IsSame(&utm)) << back->crs;
+}
+
+TEST(MapFrameCrs, OnlyADerivedSimilarityReadsBack) {
+  EXPECT_FALSE(georef_from_frame_crs(map_frame_crs_wkt("room", std::nullopt)));
+  EXPECT_FALSE(georef_from_frame_crs(map_frame_crs_wkt("ubc", MapGeoref{"EPSG:26910", 0, 0, 0, 1})));
+  EXPECT_FALSE(georef_from_frame_crs("not a crs"));
+  // A shear is an affine but no similarity: the map frame would not be metric.
+  std::string wkt = map_frame_crs_wkt("floor", MapGeoref{"EPSG:26910", 10, 20, 0, 1});
+  const size_t b2 = wkt.find("PARAMETER[\"B2\",");
+  ASSERT_NE(b2, std::string::npos);
+  wkt.replace(b2, wkt.find(',', b2 + 15) - b2, "PARAMETER[\"B2\",1.5");
+  read(wkt);  // still a CRS OGR reads
+  EXPECT_FALSE(georef_from_frame_crs(wkt));
+}
+
 TEST(MapFrameCrs, UnusableBaseIsBadInput) {
   EXPECT_THROW(map_frame_crs_wkt("x", MapGeoref{"EPSG:4326", 1, 2, 0.1, 1}), BadInput);
   EXPECT_THROW(map_frame_crs_wkt("x", MapGeoref{"not a crs", 0, 0, 0, 1}), BadInput);
