@@ -133,7 +133,7 @@ void GisLayers::apply(const std::vector<LayerSpec>& layers) {
   tx.commit();
 }
 
-void GisLayers::publish(const std::string& name, const std::string& crs_wkt) {
+void GisLayers::publish(const std::string& name, const std::string& crs_wkt, bool with_gps_fixes) {
   const MapInfo map = MapStore(c_).info(name);
   const std::string id = std::to_string(map.id);
   const int srid = map_srid(map.id);
@@ -220,15 +220,15 @@ void GisLayers::publish(const std::string& name, const std::string& crs_wkt) {
         "SELECT tr.id, r.db_user, " + iso("tr.t") + ", tr.theta, tr.v, tr.w, " + with_srid("tr.pos", srid) +
             " FROM robots r STRAIGHT_JOIN trajectories tr ON tr.robot_id = r.id WHERE r.map_id = " + id);
 
-  stage_gps_fixes(layers);
+  if (with_gps_fixes) stage_gps_fixes(layers);
   apply(layers);
   drop_orphans();
 }
 
-void GisLayers::withdraw() {
+void GisLayers::withdraw(bool with_gps_fixes) {
   const SessionValue utc(c_, "time_zone", "'+00:00'");
   std::vector<LayerSpec> layers;
-  stage_gps_fixes(layers);
+  if (with_gps_fixes) stage_gps_fixes(layers);
   apply(layers);
   drop_orphans();
 }

@@ -35,12 +35,14 @@ class GisLayers {
   // The connection is to the fleet database (its DATABASE() names <db>_gis).
   explicit GisLayers(mysqlpp::Connection& c);
 
-  // Rebuilds every layer of map `name` (throws MapNotFound), its CRS (crs_wkt, the
-  // map frame's OGC WKT: common/gis/map_frame_crs.h) and the GPS layer, and drops
-  // the layers of maps that are gone.
-  void publish(const std::string& name, const std::string& crs_wkt);
-  // Drops the layers of maps that are gone and refreshes the GPS layer.
-  void withdraw();
+  // Rebuilds every layer of map `name` (throws MapNotFound) and its CRS (crs_wkt, the
+  // map frame's OGC WKT: common/gis/map_frame_crs.h), and drops the layers of maps that
+  // are gone. with_gps_fixes: the fleet-wide GPS layer too; it holds every fix of every
+  // robot (tens of thousands of rows on a busy fleet), so a map change leaves it to
+  // `gis publish`.
+  void publish(const std::string& name, const std::string& crs_wkt, bool with_gps_fixes = false);
+  // Drops the layers of maps that are gone (and refreshes the GPS layer if asked).
+  void withdraw(bool with_gps_fixes = false);
 
   // What geometry_columns lists now.
   std::vector<GisLayerInfo> layers();

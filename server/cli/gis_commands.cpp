@@ -26,9 +26,9 @@ int run_gis_publish(const GisPublishArgs& a, CliContext& ctx) {
   if (a.maps.empty()) maps = store.list();
   for (const std::string& name : a.maps) maps.push_back(store.info(name));  // MapNotFound: exit 4
   GisLayers layers(ctx.connection());
-  if (maps.empty()) layers.withdraw();
+  if (maps.empty()) layers.withdraw(true);
   for (const MapInfo& m : maps) {
-    layers.publish(m.name, map_frame_crs_wkt(m.name, m.georef));
+    layers.publish(m.name, map_frame_crs_wkt(m.name, m.georef), true);
     std::printf("published '%s': %zu layers in %s\n", m.name.c_str(), GisLayers::map_layer_names().size(),
                 layers.database().c_str());
   }
