@@ -4,19 +4,15 @@
 
 #include "common/geometry/number_format.h"
 #include "protocol/connection.h"
+#include "protocol/sql_util.h"
 #include "protocol/map_store.h"
 
 namespace fleetmap {
 
-namespace {
+using sql::to_double;
+using sql::to_int;
 
-double to_double(const mysqlpp::String& s) {
-  double v = 0;
-  const char* b = s.data();
-  auto [end, ec] = std::from_chars(b, b + s.length(), v);
-  if (ec != std::errc() || end != b + s.length()) throw DbError("unexpected number from the database: '" + std::string(s) + "'");
-  return v;
-}
+namespace {
 
 }  // namespace
 

@@ -6,27 +6,16 @@
 #include "common/map/map_window.h"
 #include "common/geometry/number_format.h"
 #include "protocol/connection.h"
+#include "protocol/sql_util.h"
 
 namespace fleetmap {
+
+using sql::to_double;
+using sql::to_int;
+
 namespace {
 
 constexpr size_t kBatchRows = 2000;  // rows per multi-row INSERT
-
-double to_double(const mysqlpp::String& s) {
-  double v = 0;
-  const char* b = s.data();
-  auto [end, ec] = std::from_chars(b, b + s.length(), v);
-  if (ec != std::errc() || end != b + s.length()) throw DbError("unexpected number from the database: '" + std::string(s) + "'");
-  return v;
-}
-
-long long to_int(const mysqlpp::String& s) {
-  long long v = 0;
-  const char* b = s.data();
-  auto [end, ec] = std::from_chars(b, b + s.length(), v);
-  if (ec != std::errc() || end != b + s.length()) throw DbError("unexpected integer from the database: '" + std::string(s) + "'");
-  return v;
-}
 
 std::string n(double v) { return format_number(v); }
 

@@ -19,13 +19,6 @@
 namespace fleetmap {
 namespace {
 
-bool ends_with_ci(const std::string& s, const std::string& suffix) {
-  if (s.size() < suffix.size()) return false;
-  for (size_t i = 0; i < suffix.size(); ++i)
-    if (std::tolower(static_cast<unsigned char>(s[s.size() - suffix.size() + i])) != suffix[i]) return false;
-  return true;
-}
-
 enum class Kind { Point, Line, Polygon, Other };
 
 Kind kind_of(OGRwkbGeometryType t) {

@@ -10,14 +10,15 @@
 #include "common/core/error.h"
 
 namespace fleetmap {
-namespace {
 
-bool ends_with(const std::string& s, const std::string& suffix) {
+bool ends_with_ci(const std::string& s, const std::string& suffix) {
   if (s.size() < suffix.size()) return false;
   for (size_t i = 0; i < suffix.size(); ++i)
     if (std::tolower(static_cast<unsigned char>(s[s.size() - suffix.size() + i])) != suffix[i]) return false;
   return true;
 }
+
+namespace {
 
 std::string trim(std::string s) {
   while (!s.empty() && (s.back() == '\r' || s.back() == ' ' || s.back() == '\t')) s.pop_back();
@@ -62,7 +63,7 @@ GDALDatasetUniquePtr open_ogr_source(const std::string& source, const std::vecto
   GDALAllRegister();
   CPLStringList open_options;
   std::string conf;
-  if (ends_with(source, ".osm") || ends_with(source, ".pbf")) {
+  if (ends_with_ci(source, ".osm") || ends_with_ci(source, ".pbf")) {
     static std::atomic<int> serial{0};
     conf = "/vsimem/fleetmap_osmconf_" + std::to_string(serial++) + ".ini";
     const std::string text = osm_config_text(keys);

@@ -11,6 +11,9 @@ namespace fleetmap {
 
 // Opens a vector source read-only (a path or an OGR connection string); throws
 // FileFormatError naming it and GDAL's reason when OGR cannot.
+// Whether s ends with suffix (lower case), ignoring the case of s: file extensions.
+bool ends_with_ci(const std::string& s, const std::string& suffix);
+
 GDALDatasetUniquePtr open_ogr_source(const std::string& source, const std::vector<std::string>& keys);
 
 // GDAL's default osmconf.ini with `keys` added to every layer's attributes and names not
