@@ -76,32 +76,35 @@ Point GeoTransform::base_to_map(Point b) const {
   return {c * dx + s * dy, -s * dx + c * dy};
 }
 
-Point GeoTransform::to_map(LonLat ll) const {
+namespace {
+
+// One PROJ call; a point outside the CRS's domain comes back as HUGE_VAL or NaN.
+PJ_COORD trans_or_throw(PJ* op, std::mutex& m, PJ_DIRECTION dir, double a, double b, const char* what,
+                        const std::string& crs) {
   PJ_COORD out;
   {
-    std::lock_guard lock(proj_->mutex);
-    out = proj_trans(proj_->to_base, PJ_FWD, proj_coord(ll.lon, ll.lat, 0, 0));
+    std::lock_guard lock(m);
+    out = proj_trans(op, dir, proj_coord(a, b, 0, 0));
   }
   if (!std::isfinite(out.xy.x) || !std::isfinite(out.xy.y) || out.xy.x == HUGE_VAL) {
-    char b[96];
-    std::snprintf(b, sizeof b, "lon %.9g, lat %.9g: outside the domain of CRS '", ll.lon, ll.lat);
-    throw BadInput(b + georef_.crs + "'");
+    char buf[96];
+    std::snprintf(buf, sizeof buf, what, a, b);
+    throw BadInput(buf + std::string(": outside the domain of CRS '") + crs + "'");
   }
+  return out;
+}
+
+}  // namespace
+
+Point GeoTransform::to_map(LonLat ll) const {
+  const PJ_COORD out = trans_or_throw(proj_->to_base, proj_->mutex, PJ_FWD, ll.lon, ll.lat, "lon %.9g, lat %.9g",
+                                      georef_.crs);
   return base_to_map({out.xy.x, out.xy.y});
 }
 
 LonLat GeoTransform::to_wgs84(Point m) const {
   const Point b = map_to_base(m);
-  PJ_COORD out;
-  {
-    std::lock_guard lock(proj_->mutex);
-    out = proj_trans(proj_->to_base, PJ_INV, proj_coord(b.x, b.y, 0, 0));
-  }
-  if (!std::isfinite(out.lp.lam) || !std::isfinite(out.lp.phi) || out.lp.lam == HUGE_VAL) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "map (%.9g, %.9g): outside the domain of CRS '", m.x, m.y);
-    throw BadInput(buf + georef_.crs + "'");
-  }
+  const PJ_COORD out = trans_or_throw(proj_->to_base, proj_->mutex, PJ_INV, b.x, b.y, "base (%.9g, %.9g)", georef_.crs);
   return {out.lp.lam, out.lp.phi};
 }
 
