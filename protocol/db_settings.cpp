@@ -57,6 +57,7 @@ const char* section_name(Role role) {
     case Role::Operator: return "operator";
     case Role::Inspector: return "inspector";
     case Role::Robot: return "robot";
+    case Role::Web: return "web";
   }
   return "";
 }

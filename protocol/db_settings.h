@@ -2,7 +2,7 @@
 // Where and as whom a program connects (SPEC 4): one config file, overridden by
 // FLEETMAP_* environment variables, overridden by command-line flags.
 //
-//   [database]             [server] / [operator] / [inspector]
+//   [database]             [server] / [operator] / [inspector] / [web]
 //   host = 127.0.0.1       user = fleetmap_operator
 //   port = 33306           password = ...
 //   socket = /path/sock    (or password_file = /path)
@@ -19,7 +19,7 @@
 
 namespace fleetmap {
 
-enum class Role { Server, Operator, Inspector, Robot };
+enum class Role { Server, Operator, Inspector, Robot, Web };
 const char* section_name(Role role);
 
 struct DbSettings {

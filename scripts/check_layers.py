@@ -21,7 +21,7 @@ COMMON_ORDER = ["core", "geometry", "map", "scene", "raycast", "slicing", "plann
 CHECKED = ["common", "protocol", "app", "server", "client"]
 # Folders the product never includes, whatever its layer.
 NEVER_INCLUDED = ["tests", "bench", "examples", "fuzz"]
-SERVER_PARTS = ["core", "daemon", "cli"]
+SERVER_PARTS = ["core", "daemon", "cli", "web"]
 
 COMMON = ["common/" + c for c in COMMON_ORDER]
 BASE = COMMON + ["protocol", "app"]
@@ -31,6 +31,7 @@ ALLOWED = {
     "server/core": BASE + ["server/core"],
     "server/daemon": BASE + ["server/core", "server/daemon"],
     "server/cli": BASE + ["server/core", "server/cli"],
+    "server/web": BASE + ["server/core", "server/web"],
     "client": BASE + ["client"],
     "client/sim": BASE + ["client", "client/sim"],
 }

@@ -39,8 +39,8 @@ password_for() {
 }
 
 write_conf() {
-  local spw opw ipw
-  spw="$(password_for server)"; opw="$(password_for operator)"; ipw="$(password_for inspector)"
+  local spw opw ipw wpw
+  spw="$(password_for server)"; opw="$(password_for operator)"; ipw="$(password_for inspector)"; wpw="$(password_for web)"
   umask 077
   cat > "$CONF.tmp" <<CONF
 # fleetmap connection settings for the private instance (written by scripts/db.sh).
@@ -62,6 +62,10 @@ password = $opw
 [inspector]
 user = fleetmap_inspector
 password = $ipw
+
+[web]
+user = fleetmap_web
+password = $wpw
 CONF
   mv "$CONF.tmp" "$CONF"
 }
@@ -73,7 +77,7 @@ load_sql() {
   done
   write_conf
   local role
-  for role in server operator inspector; do
+  for role in server operator inspector web; do
     local pw; pw="$(password_for "$role")"
     admin "$DB" <<SQL
 CREATE USER IF NOT EXISTS 'fleetmap_$role'@'%';
