@@ -58,6 +58,23 @@ PIDS+=($!)
 sleep 0.5
 "$BIN/fleetmap-server" --config "$CONF" --check
 
+step "the operator's console (fleetmap-web: HTTP/WebSocket API and the live map page, docs/console.md)"
+# Port FLEETMAP_WEB_PORT (default 8080), else any free one; the address is on its stdout.
+WEB_PORT="${FLEETMAP_WEB_PORT:-8080}"
+(exec 3<>"/dev/tcp/127.0.0.1/$WEB_PORT") 2>/dev/null && WEB_PORT=0  # taken: let it choose
+"$BIN/fleetmap-web" --config "$CONF" --http-port "$WEB_PORT" > out/demo-web.out 2> out/demo-web.log &
+PIDS+=($!)
+WEB_URL=""
+for _ in $(seq 1 100); do
+  WEB_URL="$(sed -n 's|.*listening on \(https\{0,1\}://[^ ]*\).*|\1|p' out/demo-web.out | head -1)"
+  [ -n "$WEB_URL" ] && break
+  sleep 0.1
+done
+[ -n "$WEB_URL" ] || { echo "demo: fleetmap-web did not start, see out/demo-web.log" >&2; exit 1; }
+echo "  console: $WEB_URL  (sign in as fleetmap_operator, or fleetmap_inspector to look only;"
+echo "  the passwords are in $CONF)"
+echo "  API: ${WEB_URL}api/openapi.json; log: out/demo-web.log"
+
 step "three robots with their own database accounts, on GDC1"
 mkdir -p "$FLEETMAP_HOME/robots"
 # name, true start pose (x y theta), goal: all in the long corridor of the upper wing
@@ -102,6 +119,26 @@ for i in $(seq 1 $((TIMEOUT / 3))); do
     "SELECT COUNT(*) FROM v_tasks WHERE robot IN ('r1','r2','r3') AND state IN ('assigned','acknowledged','active')")"
   [ "$open" = 0 ] && break
 done
+
+step "the same fleet through the HTTP API (curl, signed in as the operator; the CSRF token on every write)"
+OPW="$(awk '/^\[operator\]/{f=1;next} /^\[/{f=0} f&&$1=="password"{print $3}' "$CONF")"
+JAR="$(mktemp)"
+CSRF="$(curl -fsS -c "$JAR" -H 'Content-Type: application/json' \
+  -d "{\"user\":\"fleetmap_operator\",\"password\":\"$OPW\"}" "${WEB_URL}api/login" |
+  python3 -c 'import json,sys; print(json.load(sys.stdin)["csrf"])')"
+echo "-- GET /api/robots"
+curl -fsS -b "$JAR" "${WEB_URL}api/robots" | python3 -c '
+import json, sys
+for r in json.load(sys.stdin):
+    t = r.get("task") or {}
+    print("  %-4s %-8s x=%s y=%s task=%s %s" % (r["name"], r["state"], r["x"], r["y"], t.get("id"), t.get("state")))'
+echo "-- POST /api/robots/r1/goal {x: 500, y: 500} (outside GDC1): refused at once, no task"
+curl -sS -b "$JAR" -H "X-CSRF-Token: $CSRF" -H 'Content-Type: application/json' -d '{"x":500,"y":500}' \
+  -w '  HTTP %{http_code}\n' "${WEB_URL}api/robots/r1/goal" | sed 's/^/  /'
+echo "-- the same write without the CSRF token"
+curl -sS -b "$JAR" -H 'Content-Type: application/json' -d '{"x":1,"y":1}' -w '  HTTP %{http_code}\n' \
+  "${WEB_URL}api/robots/r1/goal" | sed 's/^/  /'
+rm -f "$JAR"
 
 step "the semantic layer (example room): objects, nearest chairs, what two laser heights see, a goal by meaning"
 "$FM" map import maps/example-room.map --name room --replace >/dev/null
@@ -181,4 +218,10 @@ echo "  the database as GIS layers for QGIS, ogrinfo, ogr2ogr (docs/gis-layers.m
 echo "    ogrinfo -ro -so \"MYSQL:fleetmap_gis,host=127.0.0.1,port=$PORT,user=fleetmap_inspector,password=...\" campus-osm:segments"
 for m in UT_Campus example-campus; do "$FM" map export "$m" --format svg -o "out/$m.svg"; done
 
-step "done: robots and server stopped, the database is still running (scripts/db.sh stop to stop it)"
+echo "  console: $WEB_URL (fleetmap_operator; passwords in $CONF)"
+if [ -t 0 ] && [ "${CI:-}" != true ]; then
+  step "the console stays up at $WEB_URL with the server and robot c1's map; press Enter to stop"
+  read -r _ || true
+fi
+
+step "done: robots, server and console stopped, the database is still running (scripts/db.sh stop to stop it)"
