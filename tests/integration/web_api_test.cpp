@@ -18,6 +18,7 @@
 
 #include "common/core/error.h"
 #include "server/web/api/api.h"
+#include "server/web/api/topology_json.h"
 #include "tests/integration/server_fixture.h"
 #include "tests/integration/test_db.h"
 #include "tests/integration/web_api_client.h"
@@ -516,6 +517,31 @@ TEST(WebApiErrors, ExceptionsBecomeTheirStatusCodeAndExitCode) {
   EXPECT_EQ(std::string(web::to_string(web::WebRole::Inspector)), "inspector");
 }
 
+TEST(WebApiTopology, NodeTypesAndGoalNodesWithoutADatabase) {
+  TopoGraph g;
+  g.add_node({0, {0, 0}, "dock"});
+  g.add_node({1, {10, 0}, ""});
+  g.add_node({2, {20, 0}, ""});
+  g.add_node({3, {30, 0}, "dock"});  // a second node of that name, farther from (12, 0)
+  g.add_node({4, {40, 0}, ""});      // no edges
+  g.add_edge({.a = 0, .b = 1, .type = EdgeType::Corridor});
+  g.add_edge({.a = 1, .b = 2, .type = EdgeType::Stairs});
+  g.add_edge({.a = 2, .b = 3, .type = EdgeType::Door});
+  const json t = web::topology_json(g);
+  EXPECT_EQ(t["nodes"][0]["type"], "corridor");
+  EXPECT_EQ(t["nodes"][1]["type"], "stairs");  // stairs beat the corridor
+  EXPECT_EQ(t["nodes"][2]["type"], "stairs");  // and the door
+  EXPECT_EQ(t["nodes"][3]["type"], "door");
+  EXPECT_TRUE(t["nodes"][4]["type"].is_null());
+  EXPECT_TRUE(t["nodes"][1]["name"].is_null());
+  EXPECT_EQ(web::find_goal_node(g, "dock", Point{12, 0})->id, 0);
+  EXPECT_EQ(web::find_goal_node(g, "dock", Point{28, 0})->id, 3);
+  EXPECT_EQ(web::find_goal_node(g, "stairs", Point{28, 0})->id, 2);
+  EXPECT_EQ(web::find_goal_node(g, "stairs", std::nullopt)->id, 1);  // no position: the first
+  EXPECT_EQ(web::find_goal_node(g, "elevator", Point{0, 0}), nullptr);
+  EXPECT_EQ(web::find_goal_node(g, "nowhere", Point{0, 0}), nullptr);
+}
+
 TEST(WebApiDocument, OpenApiListsEveryRouteWithItsMethod) {
   std::ifstream in(source_path("docs/openapi.json"));
   ASSERT_TRUE(in) << "docs/openapi.json";
@@ -534,7 +560,7 @@ TEST(WebApiDocument, OpenApiListsEveryRouteWithItsMethod) {
     ASSERT_TRUE(path.contains(lower(r.method))) << r.method << " " << r.pattern;
     const json& op = path[lower(r.method)];
     EXPECT_TRUE(op.contains("responses")) << r.pattern;
-    EXPECT_FALSE(r.summary.empty()) << r.pattern;
+    EXPECT_EQ(op["summary"], r.summary) << r.pattern;  // api.h: "one line, as in docs/openapi.json"
     if (r.write) {
       // A write needs the session and the CSRF token (SPEC 4), and says so.
       ASSERT_TRUE(op.contains("security")) << r.pattern;
