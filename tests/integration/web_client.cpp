@@ -157,8 +157,19 @@ struct WsImpl : FeedClient::Impl {
     websocket::response_type res;
     beast::error_code ec;
     ws->handshake(res, web.host() + ":" + std::to_string(web.port()), "/api/ws", ec);
-    if (ec) throw WsRefused(res.result_int(), "WebSocket refused: " + ec.message() + " (HTTP " +
-                                                  std::to_string(res.result_int()) + ")");
+    if (ec) {
+      // Beast 1.74 leaves res empty when the upgrade is declined: ask again as plain
+      // HTTP with the same headers to learn the status the server refused it with.
+      WebClient again = web;
+      again.cookie = cookie;
+      std::map<std::string, std::string> h = {{"Upgrade", "websocket"}, {"Connection", "Upgrade"},
+                                              {"Sec-WebSocket-Key", "dGhlIHNhbXBsZSBub25jZQ=="},
+                                              {"Sec-WebSocket-Version", "13"}};
+      if (!origin.empty()) h["Origin"] = origin;
+      const WebResponse refused = again.request("GET", "/api/ws", "", h, false);
+      throw WsRefused(refused.status, "WebSocket refused: " + ec.message() + " (HTTP " +
+                                          std::to_string(refused.status) + " " + refused.body + ")");
+    }
     tcp_layer.expires_never();
   }
 
