@@ -128,6 +128,7 @@ std::string WebClient::raw(const std::string& bytes, std::chrono::milliseconds t
 struct FeedClient::Impl {
   virtual ~Impl() = default;
   virtual std::optional<nlohmann::json> next(std::chrono::milliseconds timeout) = 0;
+  virtual unsigned short local_port() const = 0;
 };
 
 namespace {
@@ -173,22 +174,35 @@ struct WsImpl : FeedClient::Impl {
     tcp_layer.expires_never();
   }
 
+  unsigned short local_port() const override {
+    return beast::get_lowest_layer(*ws).socket().local_endpoint().port();
+  }
+
+  // A read outlives a timeout: the next call waits on the same one, so a short poll
+  // never cancels (and breaks) the WebSocket.
   std::optional<nlohmann::json> next(std::chrono::milliseconds timeout) override {
-    buffer.consume(buffer.size());
-    beast::error_code result = net::error::would_block;
-    ws->async_read(buffer, [&](beast::error_code ec, size_t) { result = ec; });
-    ioc.restart();
-    ioc.run_for(timeout);
-    if (result == net::error::would_block) {
-      // Nothing within the timeout: cancel the read and let its handler run.
-      beast::get_lowest_layer(*ws).cancel();
-      ioc.restart();
-      ioc.run();
-      return std::nullopt;
+    if (!pending) {
+      buffer.consume(buffer.size());
+      done = false;
+      ws->async_read(buffer, [this](beast::error_code ec, size_t) {
+        result = ec;
+        done = true;
+      });
+      pending = true;
     }
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    while (!done && std::chrono::steady_clock::now() < deadline) {
+      if (ioc.stopped()) ioc.restart();
+      ioc.run_one_for(deadline - std::chrono::steady_clock::now());
+    }
+    if (!done) return std::nullopt;
+    pending = false;
     if (result) return std::nullopt;
     return nlohmann::json::parse(beast::buffers_to_string(buffer.data()));
   }
+
+  bool pending = false, done = false;
+  beast::error_code result;
 };
 
 }  // namespace
@@ -201,6 +215,8 @@ FeedClient::FeedClient(const WebClient& web, const std::string& cookie, const st
 }
 
 FeedClient::~FeedClient() = default;
+
+unsigned short FeedClient::local_port() const { return impl_->local_port(); }
 
 std::optional<nlohmann::json> FeedClient::next(std::chrono::milliseconds timeout) { return impl_->next(timeout); }
 

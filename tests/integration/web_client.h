@@ -64,6 +64,7 @@ class FeedClient {
   // socket (a client that reads slowly or never).
   FeedClient(const WebClient& web, const std::string& cookie, const std::string& origin = "", int receive_buffer = 0);
   ~FeedClient();
+  unsigned short local_port() const;
   // The next message, or nullopt after timeout.
   std::optional<nlohmann::json> next(std::chrono::milliseconds timeout = std::chrono::seconds(10));
 

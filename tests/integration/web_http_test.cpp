@@ -7,7 +7,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
+#include <set>
+#include <sstream>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -383,24 +386,54 @@ TEST_F(WebFeed, ANewTaskArrivesAsATasksMessage) {
   for (const char* key : {"state", "created_at", "updated_at", "reason"}) EXPECT_TRUE(got.contains(key)) << key;
 }
 
+// Bytes the kernel holds unsent on the IPv4 loopback connection from port `from` to
+// port `to` (the tx_queue column of /proc/net/tcp); -1 when there is no such connection.
+long long unsent_bytes(unsigned short from, unsigned short to) {
+  std::istringstream in(read_file("/proc/net/tcp"));
+  std::string line;
+  std::getline(in, line);  // the header
+  char want_local[16], want_remote[16];
+  std::snprintf(want_local, sizeof want_local, ":%04X", from);
+  std::snprintf(want_remote, sizeof want_remote, ":%04X", to);
+  while (std::getline(in, line)) {
+    std::istringstream f(line);
+    std::string slot, local, remote, state, queues;
+    f >> slot >> local >> remote >> state >> queues;
+    if (local.size() >= 5 && remote.size() >= 5 && local.substr(local.size() - 5) == want_local &&
+        remote.substr(remote.size() - 5) == want_remote)
+      return std::stoll(queues.substr(0, queues.find(':')), nullptr, 16);
+  }
+  return -1;
+}
+
 TEST_F(WebFeed, AClientThatNeverReadsDoesNotStallAnother) {
   WebClient op = signed_in(Role::Operator);
-  // A small receive buffer, never read: its frames back up at once.
+  // A small receive buffer, never read: the frames sent to it back up in the kernel and
+  // then in the server's write, which never completes.
   FeedClient stalled(op, op.cookie, "", 2048);
   FeedClient reader(op, op.cookie);
   ASSERT_TRUE(reader.next());  // hello
   ASSERT_TRUE(reader.next());  // every robot
+  // A move every 30 ms for 6 s: a frame per feed period for each client, far more than
+  // the stalled one's buffers hold.
+  std::set<double> seen;
   const auto started = std::chrono::steady_clock::now();
-  for (int i = 1; i <= 40; ++i) {
-    const double x = 1 + 0.1 * i;
+  double x = 0;
+  for (int i = 1; i <= 200; ++i) {
+    x = 1 + 0.01 * i;
     robot_->send("SendPos", json{{"x", x}, {"y", 2.0}, {"theta", 0.0}, {"v", 0.3}}.dump());
-    ASSERT_TRUE(until_message(reader, [&](const json& m) {
-      const json* r = robot_in(m, "web_r1");
-      return r && (*r)["x"].is_number() && std::abs((*r)["x"].get<double>() - x) < 1e-9;
-    }, 5s)) << "move " << i << " never reached the reading client";
+    std::this_thread::sleep_for(30ms);
+    while (auto m = reader.next(1ms))
+      if (const json* r = robot_in(*m, "web_r1"); r && (*r)["x"].is_number()) seen.insert((*r)["x"].get<double>());
   }
-  EXPECT_LT(std::chrono::steady_clock::now() - started, 30s);
-  // And the server still answers.
+  ASSERT_TRUE(until_message(reader, [&](const json& m) {
+    const json* r = robot_in(m, "web_r1");
+    return r && (*r)["x"].is_number() && std::abs((*r)["x"].get<double>() - x) < 1e-9;
+  }, 5s)) << "the last move never reached the reading client";
+  EXPECT_LT(std::chrono::steady_clock::now() - started, 20s);
+  EXPECT_GE(seen.size(), 40u) << "the reading client got a fresh state about every feed period";
+  EXPECT_GT(unsent_bytes(web_->port(), stalled.local_port()), 0)
+      << "the stalled client's frames should be backed up in the server's socket";
   EXPECT_EQ(op.get("/api/session").status, 200);
 }
 
