@@ -38,10 +38,13 @@ BEGIN
       ini_x = NULL, ini_y = NULL, ini_theta = NULL, x = NULL, y = NULL, theta = NULL, v = NULL, last_seen = NULL;
   -- The robot's sentinel in sa, exactly one (robot_remove deletes it with the mailbox): its
   -- locking reads of sa_mine end there, not on another robot's answers (SPEC 5.3, 10_schema.sql).
+  -- A plain check, then a plain insert: INSERT ... SELECT would take shared gap locks on
+  -- sa, and two operators adding robots whose names share a gap would deadlock.
   SELECT id INTO v_id FROM robots WHERE db_user = p_name;
-  INSERT INTO sa (robot_id, db_user, request_id, op, params, payload, created_at, sentinel)
-    SELECT v_id, p_name, NULL, 'End', '{}', NULL, SYSDATE(6), 1 FROM DUAL
-    WHERE NOT EXISTS (SELECT 1 FROM sa WHERE db_user = p_name AND sentinel = 1);
+  IF NOT EXISTS (SELECT 1 FROM sa WHERE db_user = p_name AND sentinel = 1) THEN
+    INSERT INTO sa (robot_id, db_user, request_id, op, params, payload, created_at, sentinel)
+      VALUES (v_id, p_name, NULL, 'End', '{}', NULL, SYSDATE(6), 1);
+  END IF;
 END//
 
 CREATE OR REPLACE PROCEDURE robot_remove(IN p_name VARCHAR(80))
