@@ -131,10 +131,10 @@ clear_mailboxes() {
     exit 1
   fi
   for i in 1 2 3 4 5; do
-    sql "DELETE FROM rr; DELETE FROM sa" 2>/dev/null && return 0
+    sql "DELETE FROM rr; DELETE FROM sa WHERE sentinel = 0" 2>/dev/null && return 0
     sleep 1
   done
-  sql "DELETE FROM rr; DELETE FROM sa"
+  sql "DELETE FROM rr; DELETE FROM sa WHERE sentinel = 0"
 }
 
 start_servers() {  # PROCS [flags...]

@@ -66,7 +66,7 @@ if [ ${#MISSING[@]} -gt 0 ]; then
   printf '%s\n' "${MISSING[@]}" | xargs -P 4 -I{} "$BIN/fleetmap" robot add {} --map webbench \
     --password-file "$PWDIR/{}.pw" >/dev/null
 fi
-bash scripts/db.sh sql -e "DELETE FROM rr; DELETE FROM sa"
+bash scripts/db.sh sql -e "DELETE FROM rr; DELETE FROM sa WHERE sentinel = 0"
 
 "$BIN/fleetmap-server" --log-level warn >>"$FLEETMAP_HOME/server.log" 2>&1 &
 SERVER_PID=$!; PIDS+=("$SERVER_PID")

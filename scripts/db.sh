@@ -104,10 +104,14 @@ start() {
       || die "mariadb-install-db failed, see $HOME_DIR/install.log"
   fi
   local mariadbd; mariadbd="$(command -v mariadbd || echo /usr/sbin/mariadbd)"
+  # --max-connections: every robot holds its own connection (SPEC 4), so the default 151
+  # refuses the 152nd robot; 1100 leaves room for a fleet of 1000 plus servers, operators
+  # and tools.
   "$mariadbd" --no-defaults --user="$ME" --datadir="$DATA" --socket="$SOCK" \
     --port="$PORT" --bind-address=127.0.0.1 --skip-name-resolve \
     --pid-file="$PIDF" --log-error="$LOG" \
     --character-set-server=utf8mb4 --collation-server=utf8mb4_unicode_ci \
+    --max-connections=1100 \
     --max-allowed-packet=64M --innodb-buffer-pool-size=512M --innodb-log-file-size=256M >/dev/null 2>&1 &
   local pid=$! i
   for i in $(seq 1 240); do

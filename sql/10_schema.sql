@@ -193,7 +193,12 @@ CREATE TABLE IF NOT EXISTS sa (
   params      JSON NOT NULL,
   payload     LONGBLOB NULL,
   created_at  TIMESTAMP(6) NOT NULL DEFAULT CURRENT_TIMESTAMP(6),
-  KEY ix_sa_user (db_user, id)
+  -- One row per robot with sentinel = 1 (op 'End', made by robot_add) ends the robot's
+  -- range in ix_sa_mine, the index sa_mine forces: a robot's locking scan of its answers
+  -- stops at its own sentinel and never locks, nor waits on, the next robot's rows
+  -- (SPEC 5.3: no robot can stall another). Not an answer: nothing reads it.
+  sentinel    TINYINT NOT NULL DEFAULT 0,
+  KEY ix_sa_mine (db_user, sentinel, id)
 ) ENGINE=InnoDB;
 
 -- The database, not the robot, says who sent a request and when (SPEC 5.1, 9):

@@ -39,3 +39,15 @@ ALTER TABLE maps ADD COLUMN IF NOT EXISTS revision INT UNSIGNED NOT NULL DEFAULT
 -- GIS import: an obstacle's semantic keeps every attribute of its feature (seed 001
 -- section III; docs/gis-import.md), and OSM relations exceed 1 KiB.
 ALTER TABLE obstacles MODIFY semantic TEXT NOT NULL DEFAULT '';
+
+-- Robots lock only their own answers (SPEC 5.3): sa_mine forces ix_sa_mine, whose range of
+-- each robot ends at the robot's sentinel row (10_schema.sql). ix_sa_user (db_user, id)
+-- goes: no query of the server uses it, and ix_sa_mine serves db_user lookups.
+ALTER TABLE sa ADD COLUMN IF NOT EXISTS sentinel TINYINT NOT NULL DEFAULT 0 AFTER created_at,
+  ADD KEY IF NOT EXISTS ix_sa_mine (db_user, sentinel, id),
+  DROP KEY IF EXISTS ix_sa_user;
+-- One sentinel for every robot not removed that has none (robot_add makes it for new ones).
+INSERT INTO sa (robot_id, db_user, request_id, op, params, payload, created_at, sentinel)
+  SELECT r.id, r.db_user, NULL, 'End', '{}', NULL, SYSDATE(6), 1 FROM robots r
+  WHERE r.removed_at IS NULL
+    AND NOT EXISTS (SELECT 1 FROM sa WHERE sa.db_user = r.db_user AND sa.sentinel = 1);

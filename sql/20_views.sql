@@ -46,7 +46,8 @@ CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_trajectory_points AS
 CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_requests AS
   SELECT id, robot_id, db_user, op, params, OCTET_LENGTH(payload) AS payload_bytes, created_at FROM rr;
 CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_answers AS
-  SELECT id, robot_id, db_user, request_id, op, params, OCTET_LENGTH(payload) AS payload_bytes, created_at FROM sa;
+  SELECT id, robot_id, db_user, request_id, op, params, OCTET_LENGTH(payload) AS payload_bytes, created_at FROM sa
+  WHERE sentinel = 0;  -- a sentinel row is no answer (10_schema.sql)
 
 -- Objects robots reported with SetObject, with who saw them and when.
 CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_observed_objects AS
@@ -59,7 +60,11 @@ CREATE OR REPLACE SQL SECURITY DEFINER VIEW v_gps_fixes AS
 
 -- Each robot sees and deletes only its own answers (SPEC 5.1, 9). Safe only with the
 -- account-name rule and the binary no-pad collation of sa.db_user.
+-- And locks only its own (SPEC 5.3): on sa's primary key a robot's DELETE ... WHERE id <= N
+-- scans, and locks, every robot's rows up to N; on ix_sa_mine its scan stays in its own
+-- (db_user, 0, id) range and ends at its own sentinel (db_user, 1, id), which no other
+-- robot's scan reaches. FORCE INDEX: the optimizer otherwise picks PRIMARY.
 CREATE OR REPLACE SQL SECURITY DEFINER VIEW sa_mine AS
   SELECT id, robot_id, db_user, request_id, op, params, payload, created_at
-  FROM sa
-  WHERE db_user = SUBSTRING_INDEX(USER(), '@', 1);
+  FROM sa FORCE INDEX (ix_sa_mine)
+  WHERE db_user = SUBSTRING_INDEX(USER(), '@', 1) AND sentinel = 0;

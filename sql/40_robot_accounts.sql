@@ -9,6 +9,7 @@ CREATE OR REPLACE PROCEDURE robot_add(IN p_name VARCHAR(80), IN p_password VARCH
   COMMENT 'creates a robot account with fleetmap_robot_role and its robots row'
 BEGIN
   DECLARE v_map INT UNSIGNED DEFAULT NULL;
+  DECLARE v_id INT UNSIGNED DEFAULT NULL;
   -- Binary comparison: under a case-insensitive collation 'R1' would pass (SPEC 5.1).
   IF p_name IS NULL OR NOT (p_name COLLATE utf8mb4_bin REGEXP '^[a-z0-9_-]{1,32}$') THEN
     SIGNAL SQLSTATE '45000' SET MESSAGE_TEXT = 'expected a robot name matching [a-z0-9_-]{1,32}';
@@ -35,6 +36,15 @@ BEGIN
   INSERT INTO robots (db_user, map_id) VALUES (p_name, v_map)
     ON DUPLICATE KEY UPDATE removed_at = NULL, map_id = v_map, state = 'offline', magic = NULL, session_at = NULL,
       ini_x = NULL, ini_y = NULL, ini_theta = NULL, x = NULL, y = NULL, theta = NULL, v = NULL, last_seen = NULL;
+  -- The robot's sentinel in sa, exactly one (robot_remove deletes it with the mailbox): its
+  -- locking reads of sa_mine end there, not on another robot's answers (SPEC 5.3, 10_schema.sql).
+  -- A plain check, then a plain insert: INSERT ... SELECT would take shared gap locks on
+  -- sa, and two operators adding robots whose names share a gap would deadlock.
+  SELECT id INTO v_id FROM robots WHERE db_user = p_name;
+  IF NOT EXISTS (SELECT 1 FROM sa WHERE db_user = p_name AND sentinel = 1) THEN
+    INSERT INTO sa (robot_id, db_user, request_id, op, params, payload, created_at, sentinel)
+      VALUES (v_id, p_name, NULL, 'End', '{}', NULL, SYSDATE(6), 1);
+  END IF;
 END//
 
 CREATE OR REPLACE PROCEDURE robot_remove(IN p_name VARCHAR(80))
@@ -61,7 +71,7 @@ BEGIN
   SET @fleetmap_sql = NULL;
   UPDATE robots SET removed_at = SYSDATE(6), state = 'offline', magic = NULL, session_at = NULL WHERE db_user = p_name;
   -- Undelivered traffic is a mailbox, not history: an account created later under the same
-  -- name must not read the old robot's answers.
+  -- name must not read the old robot's answers. The sentinel goes too (robot_add makes a new one).
   DELETE FROM sa WHERE db_user = p_name;
   DELETE FROM rr WHERE db_user = p_name;
   UPDATE tasks t JOIN robots r ON r.id = t.robot_id SET t.state = 'failed', t.reason = 'robot removed'

@@ -260,10 +260,10 @@ TEST_F(RobotSecurity, SeesAndDeletesOnlyItsOwnAnswers) {
   ready(*a_, 1);
   // B's answers wait in sa, unread.
   b_->send("Ready", R"({"magic": 2})");
-  ASSERT_TRUE(wait_until([] { return scalar("SELECT COUNT(*) FROM sa WHERE db_user = 'sec_b'") == 2; }));
+  ASSERT_TRUE(wait_until([] { return scalar("SELECT COUNT(*) FROM sa WHERE sentinel = 0 AND db_user = 'sec_b'") == 2; }));
   auto adm = admin();
   std::vector<std::string> b_ids;
-  for (const auto& r : rows(*adm, "SELECT id FROM sa WHERE db_user = 'sec_b' ORDER BY id")) b_ids.push_back(r[0]);
+  for (const auto& r : rows(*adm, "SELECT id FROM sa WHERE sentinel = 0 AND db_user = 'sec_b' ORDER BY id")) b_ids.push_back(r[0]);
   ASSERT_EQ(b_ids.size(), 2u);
   const std::string b_rows = "SELECT COUNT(*) FROM sa WHERE db_user = 'sec_b' AND robot_id = " + std::to_string(id_b_) +
                              " AND op IN ('Start', 'SetMap')";
@@ -310,7 +310,7 @@ TEST_F(RobotSecurity, SeesAndDeletesOnlyItsOwnAnswers) {
   ASSERT_EQ(got.size(), 2u);
   EXPECT_EQ(got[0].op, "Start");
   EXPECT_EQ(got[1].op, "SetMap");
-  EXPECT_EQ(scalar("SELECT COUNT(*) FROM sa WHERE db_user = 'sec_b'"), 0);
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM sa WHERE sentinel = 0 AND db_user = 'sec_b'"), 0);
 }
 
 TEST(RobotSecurityLogin, OnlyTheExactNameWithItsPasswordLogsIn) {
@@ -774,7 +774,7 @@ TEST(RobotSecurityRemove, DropsTheAccountEndsItsConnectionsKeepsItsTrajectory) {
     ASSERT_TRUE(wait_until([&] { return scalar(trajectory) == before + 3; })) << server.log().substr(0, 5000);
     // An answer waiting, to see the mailbox emptied.
     d.send("GetPosEnd");
-    ASSERT_TRUE(wait_until([] { return scalar("SELECT COUNT(*) FROM sa WHERE db_user = 'sec_d'") == 1; }));
+    ASSERT_TRUE(wait_until([] { return scalar("SELECT COUNT(*) FROM sa WHERE sentinel = 0 AND db_user = 'sec_d'") == 1; }));
     EXPECT_EQ(scalar("SELECT COUNT(*) FROM information_schema.PROCESSLIST WHERE USER = 'sec_d'"), 2);
 
     const RunResult r = run("fleetmap", "robot remove sec_d");

@@ -4,9 +4,10 @@
 //     per robot, never to another robot, and both processes did work;
 //   * SIGKILL at random moments, again and again, while robots keep sending: no request
 //     lost, none answered twice, side effects stored once, order kept;
-//   * a robot that holds locks on the end of sa (SELECT ... FOR UPDATE, DELETE, or a
-//     SERIALIZABLE read of sa_mine in an open transaction) does not stall the others: the
-//     server ends that robot's connection and says so in its log;
+//   * a robot that holds locks on its answers (SELECT ... FOR UPDATE, DELETE, or a
+//     SERIALIZABLE read of sa_mine in an open transaction) blocks no other robot's answers
+//     and, when the server's answer to it waits, does not stall the others: the server
+//     ends that robot's connection and says so in its log;
 //   * SIGTERM while requests flow: exit code 0 within seconds, nothing half-handled, and
 //     the next server answers the rest exactly once.
 #include <signal.h>
@@ -172,7 +173,7 @@ std::pair<std::string, std::string> mixed_request(size_t i, Bot& b) {
 
 std::vector<Ans> answers_in_sa(mysqlpp::Connection& db, const Bot& b) {
   mysqlpp::Query q = db.query();
-  q << "SELECT id, robot_id, request_id, op FROM sa WHERE db_user = " << mysqlpp::quote << b.name << " ORDER BY id";
+  q << "SELECT id, robot_id, request_id, op FROM sa WHERE sentinel = 0 AND db_user = " << mysqlpp::quote << b.name << " ORDER BY id";
   std::vector<Ans> out;
   for (const mysqlpp::Row& r : q.store()) {
     Ans a;
@@ -351,7 +352,7 @@ TEST(ServerConcurrency, TwoServersAnswerEveryRequestOnceInOrder) {
   }
   EXPECT_EQ(total, kRobots * kRequests);
   // Nothing left behind: every answer was read and deleted by its robot, every request taken.
-  EXPECT_EQ(scalar("SELECT COUNT(*) FROM sa WHERE db_user IN " + in_list(bots)), 0);
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM sa WHERE sentinel = 0 AND db_user IN " + in_list(bots)), 0);
   EXPECT_EQ(waiting_requests(bots), 0);
   for (const Bot& b : bots) {
     const long long fixes = scalar("SELECT COUNT(*) FROM gps_fixes WHERE robot_id = " + std::to_string(b.id));
@@ -436,7 +437,7 @@ TEST(ServerConcurrency, BusyRobotsDoNotStarveOthers) {
     mysqlpp::Query q = db->query("SELECT db_user, TIMESTAMPDIFF(MICROSECOND, MIN(created_at), SYSDATE(6)) FROM rr "
                                  "WHERE db_user IN " + in_list(bots) + " GROUP BY db_user");
     for (const mysqlpp::Row& r : q.store()) oldest_s[std::string(r[0])] = std::stod(std::string(r[1])) / 1e6;
-    mysqlpp::Query a = db->query("SELECT db_user, COUNT(*) FROM sa WHERE db_user IN " + in_list(bots) + " GROUP BY db_user");
+    mysqlpp::Query a = db->query("SELECT db_user, COUNT(*) FROM sa WHERE sentinel = 0 AND db_user IN " + in_list(bots) + " GROUP BY db_user");
     for (const mysqlpp::Row& r : a.store()) answered[std::string(r[0])] = std::stoll(std::string(r[1]));
     traffic.stop();
   }
@@ -511,7 +512,7 @@ TEST(ServerCrash, KilledAgainAndAgainLosesNothingAndAnswersNothingTwice) {
 }
 
 // ---------------------------------------------------------------------------------------
-// c. A robot holding locks on the end of sa does not stall the others.
+// c. A robot holding locks on its answers does not stall the others.
 
 struct Hold {
   const char* name;
@@ -523,12 +524,14 @@ void PrintTo(const Hold& h, std::ostream* os) { *os << h.name; }  // test names 
 
 class StallGuard : public ::testing::TestWithParam<Hold> {};
 
+// Since sentinels (sql/10_schema.sql, sa.sentinel) A's hold locks only its own range of
+// sa's ix_sa_mine: no other robot's answers wait on it (tests/integration/sa_lock_test.cpp),
+// but the server's insert of A's next answer does, and with it the other requests of the
+// server's batch. So A asks (from a second connection) while it holds.
 TEST_P(StallGuard, BlockingRobotIsEndedAndOthersAreServed) {
   const Hold hold = GetParam();
   ensure_example_map(kMap);
-  // Names unique to this run, A right before B in sa's (db_user, id) index, and B with no
-  // rows in sa yet: B's first answers go into the index gap that A's transaction locks
-  // (and at the end of sa's primary key when the read scans the table).
+  // Names unique to this run, A right before B in sa's index, and B with no answers yet.
   const std::string tag = "st" + std::to_string(getpid()) + std::string(hold.name).substr(0, 3);
   const std::string a_name = tag + "_a", b_name = tag + "_b";
   const RemoveRobotsAtEnd cleanup{{a_name, b_name}};
@@ -548,13 +551,14 @@ TEST_P(StallGuard, BlockingRobotIsEndedAndOthersAreServed) {
     if (std::string(hold.statement).rfind("SELECT", 0) == 0) q.store();
     else q.execute();
   }
-  // The hold is real: an insert at B's place in sa waits on A (the administrator tries, briefly).
-  {
+  // The hold is real: an insert of A's next answer waits on A; one of B's does not (the
+  // administrator tries, briefly).
+  auto probe = [](const std::string& name) {
     auto db = admin();
     db->query("SET SESSION innodb_lock_wait_timeout = 1").execute();
     db->query("START TRANSACTION").execute();
     mysqlpp::Query ins = db->query();
-    ins << "INSERT INTO sa (robot_id, db_user, request_id, op, params) VALUES (0, " << mysqlpp::quote << b_name
+    ins << "INSERT INTO sa (robot_id, db_user, request_id, op, params) VALUES (0, " << mysqlpp::quote << name
         << ", NULL, 'Probe', '{}')";
     bool waited = false;
     try {
@@ -563,9 +567,14 @@ TEST_P(StallGuard, BlockingRobotIsEndedAndOthersAreServed) {
       waited = e.errnum() == 1205;
     }
     db->query("ROLLBACK").execute();
-    ASSERT_TRUE(waited) << "A's " << hold.statement << " does not block inserts into sa: the test proves nothing";
-  }
+    return waited;
+  };
+  ASSERT_TRUE(probe(a_name)) << "A's " << hold.statement << " does not block inserts into sa: the test proves nothing";
+  EXPECT_FALSE(probe(b_name)) << "A's " << hold.statement << " blocks inserts of B's answers (SPEC 5.3)";
 
+  // A asks from a second connection: the server's answer to it waits on A's hold.
+  SqlRobot a2(a_name, a_pw);
+  const auto a_gps = a2.send("SendGPS", R"({"lat": 41.4, "lon": 2.1})");
   // B registers and asks: answered within a few seconds although A never commits.
   SqlRobot b(b_name, b_pw);
   const auto t0 = Clock::now();
@@ -586,17 +595,28 @@ TEST_P(StallGuard, BlockingRobotIsEndedAndOthersAreServed) {
   EXPECT_EQ(got[0].op, "OpAck");
   EXPECT_LT(elapsed_s(t1), 2.0);
 
-  // A's connection was ended, and the server says so.
-  EXPECT_THROW(a.connection().query("SELECT 1").store(), mysqlpp::Exception) << "A's connection is still alive";
+  // A's holding connection was ended, and the server says so.
+  EXPECT_TRUE(wait_until([&] {
+    try {
+      a.connection().query("SELECT 1").store();
+      return false;
+    } catch (const mysqlpp::Exception&) {
+      return true;
+    }
+  }, seconds(8))) << "A's connection is still alive";
   const std::string log = read_file(temp_path(log_name));
   EXPECT_NE(log.find("of robot " + a_name + ":"), std::string::npos) << log.substr(0, 6000);
   EXPECT_EQ(log.find("of robot " + b_name + ":"), std::string::npos) << "B was ended too:\n" << log.substr(0, 6000);
-  // A's transaction was rolled back: its unread answers are still there for its next connection.
-  EXPECT_EQ(scalar("SELECT COUNT(*) FROM sa WHERE db_user = '" + a_name + "'"), 2);
+  // A's transaction was rolled back: its unread answers are still there for its next
+  // connection, and the answer to its SendGPS after them.
+  ASSERT_TRUE(wait_until([&] { return scalar("SELECT COUNT(*) FROM sa WHERE sentinel = 0 AND db_user = '" + a_name + "'") == 3; }))
+      << scalar("SELECT COUNT(*) FROM sa WHERE sentinel = 0 AND db_user = '" + a_name + "'");
   SqlRobot again(a_name, a_pw);
-  EXPECT_EQ(again.peek().size(), 2u);
+  got = again.peek();
+  ASSERT_EQ(got.size(), 3u);
+  EXPECT_EQ(got[2].request_id, a_gps);
+  EXPECT_EQ(got[2].op, "OpAck");
   std::cout << "[ info ] " << hold.name << ": B answered after " << wait_s << " s\n";
-
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -642,14 +662,24 @@ TEST(ServerStall, OnlyTheBlockingRobotIsEnded) {
     db->query("ROLLBACK").execute();
   }
 
-  // A blocks the end of sa; B must be served, A ended, C left alone.
+  // A blocks the server's answers to itself (its range of sa, sentinel included) and asks
+  // from a second connection; B must be served, A ended, C left alone.
   a.connection().query("SET SESSION TRANSACTION ISOLATION LEVEL REPEATABLE READ").execute();
   a.connection().query("START TRANSACTION").execute();
   a.connection().query("SELECT * FROM sa_mine FOR UPDATE").store();
+  SqlRobot a2(a_name, a_pw);
+  a2.send("SendGPS", R"({"lat": 41.4, "lon": 2.1})");
   SqlRobot b(b_name, b_pw);
   b.send("Ready", R"({"magic": 2})");
   EXPECT_EQ(b.receive(2, seconds(8)).size(), 2u);
-  EXPECT_THROW(a.connection().query("SELECT 1").store(), mysqlpp::Exception) << "A's connection is still alive";
+  EXPECT_TRUE(wait_until([&] {
+    try {
+      a.connection().query("SELECT 1").store();
+      return false;
+    } catch (const mysqlpp::Exception&) {
+      return true;
+    }
+  }, seconds(8))) << "A's connection is still alive";
 
   const std::string log = read_file(temp_path("stall_bystander.log"));
   EXPECT_NE(log.find("of robot " + a_name + ":"), std::string::npos) << log.substr(0, 6000);
@@ -682,7 +712,7 @@ TEST(ServerShutdown, SigtermWhileBusyExitsCleanlyAndHalfHandlesNothing) {
     Daemon server("--workers 2", "shutdown_server.log");
     TrafficGenerator traffic(bots, milliseconds(2));
     // Flowing: answers arrive.
-    ASSERT_TRUE(wait_until([&] { return scalar("SELECT COUNT(*) FROM sa WHERE db_user IN " + in_list(bots)) > 500; },
+    ASSERT_TRUE(wait_until([&] { return scalar("SELECT COUNT(*) FROM sa WHERE sentinel = 0 AND db_user IN " + in_list(bots)) > 500; },
                            seconds(20)));
     const auto t0 = Clock::now();
     status = server.signal_and_wait(SIGTERM, seconds(10));
