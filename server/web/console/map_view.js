@@ -1,0 +1,108 @@
+// The map: one Leaflet map in the current frame (frames.js) with the map's layers
+// (walls, objects, avoided areas, topology) and the fleet's (trajectories, goals,
+// robots). Switching frames rebuilds it: Leaflet cannot change a map's CRS.
+'use strict';
+
+const SHAPE_COLOURS = { stairs: '#8250df', ramp: '#9a6700' };
+
+function shapeColour(type) {
+  const t = String(type).toLowerCase();
+  if (t === '5' || t.indexOf('stair') >= 0) return SHAPE_COLOURS.stairs;
+  if (t === '6' || t.indexOf('ramp') >= 0) return SHAPE_COLOURS.ramp;
+  return '#24292f';
+}
+
+class MapView {
+  constructor(elementId, onClick) {
+    this.elementId = elementId;
+    this.onClick = onClick;
+    this.map = null;
+    this.frame = mapFrame;
+  }
+
+  // A fresh Leaflet map in frame, with empty layer groups.
+  reset(frame) {
+    if (this.map) this.map.remove();
+    this.frame = frame;
+    this.map = L.map(this.elementId, {
+      crs: frame.crs,
+      minZoom: frame.name === 'map' ? -6 : 1,
+      maxZoom: frame.name === 'map' ? 6 : 24,
+      zoomSnap: 0.25,
+      attributionControl: false,
+    });
+    this.layers = {};
+    for (const name of ['walls', 'objects', 'avoided', 'topology', 'trails', 'goals', 'robots']) {
+      this.layers[name] = L.layerGroup();
+    }
+    for (const name of ['walls', 'objects', 'avoided', 'topology', 'trails']) {
+      const box = document.getElementById('layer-' + name);
+      if (!box || box.checked) this.layers[name].addTo(this.map);
+    }
+    this.layers.goals.addTo(this.map);
+    this.layers.robots.addTo(this.map);
+    L.control.scale({ imperial: false }).addTo(this.map);
+    this.map.on('click', (e) => this.onClick(e.latlng));
+    return this.map;
+  }
+
+  showLayer(name, on) {
+    if (!this.map) return;
+    if (on) this.layers[name].addTo(this.map);
+    else this.map.removeLayer(this.layers[name]);
+  }
+
+  fit(bounds) {
+    if (bounds && bounds.isValid()) this.map.fitBounds(bounds, { padding: [10, 10] });
+    else this.map.setView([0, 0], 0);
+  }
+
+  // GeoJSON of the walls: one Feature per obstacle, {"obstacle", "type", "h"}.
+  setWalls(fc) {
+    this.layers.walls.clearLayers();
+    const layer = L.geoJSON(fc, {
+      style: (f) => ({ color: shapeColour(f.properties && f.properties.type), weight: 2, fill: false }),
+      onEachFeature: (f, l) => {
+        const p = f.properties || {};
+        l.bindTooltip('obstacle ' + p.obstacle + ' · ' + p.type + (p.h !== undefined && p.h !== null ? ' · h ' + p.h + ' m' : ''),
+          { sticky: true });
+      },
+    });
+    this.layers.walls.addLayer(layer);
+    return layer.getBounds();
+  }
+
+  setObjects(fc) { this.setOverlay('objects', fc, { color: '#bc4c00', weight: 1.5, fillOpacity: 0.15 }); }
+  setAvoided(fc) { this.setOverlay('avoided', fc, { color: '#cf222e', weight: 1, dashArray: '4 3', fillOpacity: 0.2 }); }
+
+  setOverlay(name, fc, style) {
+    this.layers[name].clearLayers();
+    this.layers[name].addLayer(L.geoJSON(fc, {
+      style: () => style,
+      pointToLayer: (f, ll) => L.circleMarker(ll, Object.assign({ radius: 4 }, style)),
+      onEachFeature: (f, l) => {
+        const p = f.properties || {};
+        const label = p.name || p.label || p.kind || p.type || p.id;
+        if (label !== undefined) l.bindTooltip(String(label), { sticky: true });
+      },
+    }));
+  }
+
+  // {"nodes": [{id, name, type, x, y}], "edges": [{from, to, type}]}, map frame.
+  setTopology(topo) {
+    const g = this.layers.topology;
+    g.clearLayers();
+    const at = {};
+    for (const n of topo.nodes || []) at[n.id] = this.frame.toLatLng(n.x, n.y);
+    for (const e of topo.edges || []) {
+      if (at[e.from] && at[e.to]) {
+        g.addLayer(L.polyline([at[e.from], at[e.to]], { color: '#0969da', weight: 1.5, opacity: 0.6, interactive: false }));
+      }
+    }
+    for (const n of topo.nodes || []) {
+      if (!at[n.id]) continue;
+      g.addLayer(L.circleMarker(at[n.id], { radius: 4, color: '#0969da', weight: 1, fillOpacity: 0.8 })
+        .bindTooltip((n.name || ('node ' + n.id)) + (n.type ? ' (' + n.type + ')' : '')));
+    }
+  }
+}
