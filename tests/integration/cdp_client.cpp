@@ -297,6 +297,7 @@ nlohmann::json CdpPage::wait_event(const std::string& method, std::chrono::milli
     if (!msg) throw CdpError("no " + method + " event within " + std::to_string(timeout.count()) + " ms");
     if (msg->value("method", "") == method) return *msg;
     if (msg->contains("method")) events_.push_back(std::move(*msg));
+    if (events_.size() > 1000) events_.pop_front();
   }
 }
 
@@ -346,6 +347,24 @@ void CdpPage::click_element(const std::string& css_selector) {
                                      " return [r.left + r.width / 2, r.top + r.height / 2]; })()");
   if (!at.is_array()) throw CdpError("no element " + css_selector + " to click");
   click(at[0].get<double>(), at[1].get<double>());
+}
+
+std::string CdpPage::page_errors() const {
+  std::string out;
+  for (const auto& e : events_) {
+    const std::string method = e.value("method", "");
+    const auto& p = e.contains("params") ? e["params"] : nlohmann::json::object();
+    if (method == "Runtime.exceptionThrown") {
+      const auto& d = p.value("exceptionDetails", nlohmann::json::object());
+      out += "exception: " + (d.contains("exception") ? d["exception"].value("description", d.value("text", "")) : d.value("text", "")) + "\n";
+    } else if (method == "Runtime.consoleAPICalled" && p.value("type", "") == "error") {
+      out += "console.error:";
+      for (const auto& a : p.value("args", nlohmann::json::array()))
+        out += " " + (a.contains("value") ? a["value"].dump() : a.value("description", ""));
+      out += "\n";
+    }
+  }
+  return out;
 }
 
 void CdpPage::insert_text(const std::string& text) { call("Input.insertText", {{"text", text}}); }

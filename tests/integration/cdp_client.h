@@ -73,6 +73,10 @@ class CdpPage {
   void insert_text(const std::string& text);            // into the focused element
   std::string screenshot_png();                         // the viewport, as PNG bytes
 
+  // The page's uncaught exceptions and console.error lines seen so far (for a failing
+  // test's message).
+  std::string page_errors() const;
+
   void set_timeout(std::chrono::milliseconds t) { timeout_ = t; }
 
  private:

@@ -167,6 +167,7 @@ async function showMap(name, wgs84) {
     view.reset(frame);
     fleet.clear();
     const bounds = view.setWalls(shown);
+    if (entry && entry.bounds) view.setBorder(entry.bounds);
     if (!wgs84 && entry && entry.bounds) {
       const b = entry.bounds;
       view.fit(L.latLngBounds([b[1], b[0]], [b[3], b[2]]));

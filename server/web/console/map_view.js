@@ -72,6 +72,15 @@ class MapView {
     return layer.getBounds();
   }
 
+  // The map's border (GET /api/maps "bounds"), map frame: where a goal may be (SPEC 3).
+  setBorder(b) {
+    const f = this.frame;
+    const corners = [[b[0], b[1]], [b[2], b[1]], [b[2], b[3]], [b[0], b[3]]].map((c) => f.toLatLng(c[0], c[1]));
+    if (corners.some((c) => !c)) return;
+    this.layers.walls.addLayer(L.polygon(corners, { color: '#8c959f', weight: 1, dashArray: '6 4', fill: false,
+      interactive: false }));
+  }
+
   setObjects(fc) { this.setOverlay('objects', fc, { color: '#bc4c00', weight: 1.5, fillOpacity: 0.15 }); }
   setAvoided(fc) { this.setOverlay('avoided', fc, { color: '#cf222e', weight: 1, dashArray: '4 3', fillOpacity: 0.2 }); }
 
