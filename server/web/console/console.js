@@ -166,14 +166,10 @@ async function showMap(name, wgs84) {
     if (seq !== app.loadSeq) return;
     view.reset(frame);
     fleet.clear();
+    // The whole border in view, and any wall drawn outside it.
     const bounds = view.setWalls(shown);
-    if (entry && entry.bounds) view.setBorder(entry.bounds);
-    if (!wgs84 && entry && entry.bounds) {
-      const b = entry.bounds;
-      view.fit(L.latLngBounds([b[1], b[0]], [b[3], b[2]]));
-    } else {
-      view.fit(bounds);
-    }
+    const border = entry && entry.bounds ? view.setBorder(entry.bounds) : null;
+    view.fit(border ? border.extend(bounds) : bounds);
     for (const r of Object.values(app.robots)) robotChanged(r);
     const q = frame.query;
     const [objects, avoided, topo] = await Promise.all([

@@ -76,9 +76,10 @@ class MapView {
   setBorder(b) {
     const f = this.frame;
     const corners = [[b[0], b[1]], [b[2], b[1]], [b[2], b[3]], [b[0], b[3]]].map((c) => f.toLatLng(c[0], c[1]));
-    if (corners.some((c) => !c)) return;
+    if (corners.some((c) => !c)) return null;
     this.layers.walls.addLayer(L.polygon(corners, { color: '#8c959f', weight: 1, dashArray: '6 4', fill: false,
       interactive: false }));
+    return L.latLngBounds(corners);
   }
 
   setObjects(fc) { this.setOverlay('objects', fc, { color: '#bc4c00', weight: 1.5, fillOpacity: 0.15 }); }
