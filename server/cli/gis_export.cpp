@@ -4,7 +4,7 @@
 #include <set>
 
 #include "common/core/error.h"
-#include "common/gis/wgs84_frame.h"
+#include "server/core/geojson_frame.h"
 
 namespace fleetmap {
 
@@ -23,15 +23,7 @@ bool is_ogr_format(const std::string& format) {
 }
 
 OutputFrame geojson_frame(const GisExportArgs& a, const std::string& name, const std::optional<MapGeoref>& georef) {
-  if (a.crs == "map") return {};
-  if (a.crs == "base")
-    throw BadInput("--crs base: GeoJSON holds WGS 84 (RFC 7946) or, by arrangement, the map frame; the base CRS "
-                   "needs a format that says its CRS (--format gpkg or fgb)");
-  if (!georef)
-    throw BadInput("map '" + name + "' has no georeference, and GeoJSON is WGS 84 longitude/latitude (RFC 7946): "
-                   "give --crs map for map-frame metres, --format gpkg for the map frame with its CRS, or "
-                   "georeference the map (fleetmap map georef)");
-  return wgs84_frame(*georef);
+  return geojson_frame(a.crs, name, georef);
 }
 
 OgrExportOptions ogr_export_options(const GisExportArgs& a, const std::string& format, const std::string& out,
@@ -44,23 +36,6 @@ OgrExportOptions ogr_export_options(const GisExportArgs& a, const std::string& f
   o.georef = georef;
   o.only_layers = {a.layers.begin(), a.layers.end()};
   return o;
-}
-
-Track load_track(FleetStore& fleet, const std::string& robot, const std::optional<std::string>& since) {
-  Track t;
-  t.robot = robot;
-  for (const TrajectoryPoint& p : fleet.trajectory(robot, since)) t.poses.push_back({p.t_utc, {p.x, p.y}, p.theta, p.v});
-  return t;
-}
-
-std::vector<Track> load_map_tracks(FleetStore& fleet, const std::string& map, const std::optional<std::string>& since) {
-  std::vector<Track> out;
-  for (const RobotStatus& r : fleet.status()) {
-    if (r.map != map) continue;
-    Track t = load_track(fleet, r.name, since);
-    if (!t.poses.empty()) out.push_back(std::move(t));
-  }
-  return out;
 }
 
 void finish_ogr_export(OgrExport& e, const std::string& out) {

@@ -18,6 +18,7 @@
 #include "common/io/output_frame.h"
 #include "common/map/map_georef.h"
 #include "protocol/fleet_store.h"
+#include "server/core/robot_tracks.h"  // load_track, load_map_tracks: the exports' tracks
 
 namespace fleetmap {
 
@@ -31,19 +32,15 @@ void add_gis_export_options(CLI::App* cmd, GisExportArgs& a);
 // The formats written by our own writers; any other --format is a GDAL vector driver.
 bool is_ogr_format(const std::string& format);
 
-// The frame of a GeoJSON export of map `name`. Throws BadInput when the map has no
-// georeference and --crs is not map, or for --crs base (GeoJSON has no CRS member).
+// The frame of a GeoJSON export of map `name` (server/core/geojson_frame.h, shared with
+// the web API). Throws BadInput when the map has no georeference and --crs is not map,
+// or for --crs base (GeoJSON has no CRS member).
 OutputFrame geojson_frame(const GisExportArgs& a, const std::string& name, const std::optional<MapGeoref>& georef);
 
 // Throws BadInput for an empty output path (a GDAL driver writes files, not standard
 // output) or an unknown driver.
 OgrExportOptions ogr_export_options(const GisExportArgs& a, const std::string& format, const std::string& out,
                                     const std::string& name, const std::optional<MapGeoref>& georef);
-
-// A robot's reported poses with their UTC times; since as FleetStore::trajectory takes it.
-Track load_track(FleetStore& fleet, const std::string& robot, const std::optional<std::string>& since);
-// Those of every robot on the map (robots with no pose are left out).
-std::vector<Track> load_map_tracks(FleetStore& fleet, const std::string& map, const std::optional<std::string>& since);
 
 // Closes the file and prints its layers and feature counts on stderr.
 void finish_ogr_export(OgrExport& e, const std::string& out);

@@ -1,6 +1,6 @@
 #pragma once
 // `fleetmap goal ROBOT --near TAG [--map M] [--margin D]`: goals by meaning
-// (docs/semantic-layer.md).
+// (docs/semantic-layer.md), through server/core/goal_by_tag.h (shared with the web API):
 //
 //   1. the robot's position: its last reported pose, else its initial pose (pose-ini);
 //   2. the object with that tag nearest to it (SceneStore::near: live objects, by the
