@@ -51,13 +51,13 @@ class Child {
   pid_t pid_ = -1;
 };
 
-// fleetmap-web on a free port (--port 0: it prints the address it listens on).
+// fleetmap-web on a free port (--http-port 0: it prints the address it listens on).
 class WebProcess {
  public:
   WebProcess() : log_(temp_path("console_web.log")) {
     write_file(log_, "");
     child_ = std::make_unique<Child>(std::string(FLEETMAP_BIN_DIR) + "/fleetmap-web --config " +
-                                     std::getenv("FLEETMAP_CONFIG") + " --port 0 --log-level debug >" + log_ +
+                                     std::getenv("FLEETMAP_CONFIG") + " --http-port 0 --log-level debug >" + log_ +
                                      " 2>&1");
     const std::regex address(R"(https?://[^\s:/]+:(\d+))");
     for (int i = 0; i < 200 && port_ == 0; ++i) {
@@ -144,7 +144,7 @@ class ConsoleBrowser : public ::testing::Test {
 
   bool visible(const std::string& selector) {
     return page_->evaluate("(() => { const e = document.querySelector(" + quoted(selector) +
-                           "); return Boolean(e && e.offsetParent !== null && getComputedStyle(e).visibility !== 'hidden'); })()") == true;
+                           "); return Boolean(e && e.getClientRects().length > 0 && getComputedStyle(e).visibility !== 'hidden'); })()") == true;
   }
 
   // A real click on the map at map-frame (x, y): the page says where that is on screen.

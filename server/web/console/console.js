@@ -231,7 +231,7 @@ function robotRow(r) {
   c[1].appendChild(dot);
   c[1].appendChild(document.createTextNode(r.state));
   c[2].textContent = fmt(r.x, 1) + ', ' + fmt(r.y, 1) + ', ' +
-    (r.theta === null || r.theta === undefined ? '–' : (r.theta * 180 / Math.PI).toFixed(0) + '°');
+    (r.theta === null || r.theta === undefined ? '–' : (Math.round(r.theta * 180 / Math.PI) + 0) + '°');
   c[3].textContent = r.task ? '#' + r.task.id + ' ' + r.task.state : '';
   tr.dataset.state = r.state;
   tr.classList.toggle('selected', r.name === fleet.selected);
