@@ -121,9 +121,9 @@ class ConsoleBrowser : public ::testing::Test {
   }
 
   // Through the form, as a person: click each field, type, click "Sign in".
-  void sign_in(Role role) {
+  void sign_in(Role role, const std::string& map = kMap) {
     const DbSettings s = settings(role);
-    page_->navigate(web_->url() + "/?map=" + kMap);
+    page_->navigate(web_->url() + "/?map=" + map);
     ASSERT_TRUE(page_->wait_for("!document.getElementById('login').hidden", 10s)) << web_->log();
     page_->click_element("#login-user");
     page_->insert_text(s.user);
@@ -133,7 +133,7 @@ class ConsoleBrowser : public ::testing::Test {
     ASSERT_TRUE(page_->wait_for("document.getElementById('login').hidden && window.fleetmapConsole.session", 10s))
         << text("#login-error") << "\n" << web_->log();
     EXPECT_EQ(text("#who-user"), s.user);
-    ASSERT_TRUE(page_->wait_for("document.getElementById('map-select').value === " + quoted(kMap), 10s));
+    ASSERT_TRUE(page_->wait_for("document.getElementById('map-select').value === " + quoted(map), 10s));
   }
 
   std::string text(const std::string& selector) {
@@ -314,6 +314,47 @@ TEST_F(ConsoleBrowser, InspectorSeesNoWriteControlsAndAForcedWriteIsRefused) {
   EXPECT_NE(text("#message").find("403"), std::string::npos) << text("#message");
   EXPECT_EQ(newest_task("console_i1").state, "assigned");
   EXPECT_EQ(scalar("SELECT COUNT(*) FROM tasks WHERE id = " + std::to_string(open.id) + " AND abort_requested_at IS NOT NULL"), 0);
+
+  // Log out: the form is back and the session is gone on the server too.
+  page_->click_element("#logout");
+  EXPECT_TRUE(page_->wait_for("!document.getElementById('login').hidden", 5s));
+  EXPECT_EQ(page_->evaluate("fetch('/api/session', {credentials: 'same-origin'}).then((r) => r.status)"), 401);
+}
+
+// A georeferenced map in WGS 84 (Web Mercator, no tiles): the layers come in lon/lat, and
+// a click still gives a goal in the map frame.
+TEST_F(ConsoleBrowser, Wgs84ViewOfAGeoreferencedMapStillTakesGoalsInTheMapFrame) {
+  const std::string map = "console_geo";
+  ensure_example_map(map);
+  // The map's x axis 0.5 rad north of east, its origin in Zurich.
+  ASSERT_EQ(run("fleetmap", "map georef " + map + " 47.3769 8.5417 --heading 0.5").exit_code, 0);
+  add_robot("console_g1", map);
+  ASSERT_EQ(run("fleetmap", "pose-ini console_g1 10 5 0").exit_code, 0);
+
+  web_ = std::make_unique<WebProcess>();
+  open_browser();
+  sign_in(Role::Operator, map);
+  ASSERT_TRUE(page_->wait_for("!document.getElementById('crs-toggle').hidden", 5s)) << "a georeferenced map";
+  page_->click_element("#crs-wgs84");
+  ASSERT_TRUE(page_->wait_for("fleetmapConsole.frame === 'wgs84' && fleetmapConsole.wgs84Fit", 10s))
+      << page_->page_errors();
+  const json fit = page_->evaluate("fleetmapConsole.wgs84Fit");
+  // An affine fit (frames.js): a similarity would leave 6 cm here, Web Mercator not being
+  // quite conformal on the ellipsoid.
+  EXPECT_LT(fit["residual"].get<double>(), 0.01) << fit.dump();
+  // Web Mercator is north-up: the frame's rotation is the georeference's heading.
+  EXPECT_NEAR(fit["rotation"].get<double>(), 0.5, 0.01) << fit.dump();
+  EXPECT_EQ(page_->evaluate("fleetmapConsole.map.options.crs === L.CRS.EPSG3857"), true);
+
+  const long long before = task_count();
+  page_->click_element("#robots tr[data-robot=\"console_g1\"]");
+  ASSERT_TRUE(page_->wait_for("!document.getElementById('mode-goal').disabled", 5s));
+  page_->click_element("#mode-goal");
+  click_map(20, 5);
+  ASSERT_TRUE(wait_until([&] { return task_count() == before + 1; }, 10s)) << text("#message");
+  const TaskRow goal = newest_task("console_g1");
+  EXPECT_NEAR(goal.gx, 20, 0.3) << text("#message");
+  EXPECT_NEAR(goal.gy, 5, 0.3);
 }
 
 }  // namespace

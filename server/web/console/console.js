@@ -400,6 +400,8 @@ document.addEventListener('keydown', (e) => { if (e.key === 'Escape') setMode(nu
 window.fleetmapConsole = {
   get map() { return view.map; },
   get frame() { return view.frame.name; },
+  // WGS 84 view: the map frame -> Web Mercator affine transform fitted to the walls (frames.js).
+  get wgs84Fit() { return view.frame.fit ? { residual: view.frame.fit.residual, rotation: view.frame.fit.rotation } : null; },
   get robots() { return app.robots; },
   get markers() { return fleet.markers; },
   get tasks() { return app.tasks; },
