@@ -111,6 +111,12 @@ long long task_count() { return scalar("SELECT COUNT(*) FROM tasks"); }
 class ConsoleBrowser : public ::testing::Test {
  protected:
   static void SetUpTestSuite() { ensure_example_map(kMap); }
+  // Before any robot or server is started: a missing browser is said at once.
+  void SetUp() override {
+    ASSERT_FALSE(Chromium::find_executable().empty())
+        << "chromium is not installed (no chromium or chromium-browser on PATH, FLEETMAP_CHROMIUM unset): "
+           "run scripts/setup.sh, which installs it";
+  }
 
   void open_browser() {
     browser_ = std::make_unique<Chromium>(temp_path("console_chromium.log"));
@@ -184,7 +190,7 @@ TEST_F(ConsoleBrowser, OperatorWatchesRobotsGivesAGoalByClickAbortsAndSeesARefus
   // name, true start pose (= operator's initial pose)
   const struct {
     std::string name, start;
-  } robots[] = {{"console_r1", "5 22 0"}, {"console_r2", "10 5 0"}, {"console_r3", "55 10 3.14159"}};
+  } robots[] = {{"console_r1", "5 22 0"}, {"console_r2", "10 5 0"}, {"console_r3", "55 8 3.14159"}};
   for (const auto& r : robots) {
     add_robot(r.name, kMap);
     ASSERT_EQ(run("fleetmap", "pose-ini " + r.name + " " + r.start).exit_code, 0);
@@ -200,9 +206,10 @@ TEST_F(ConsoleBrowser, OperatorWatchesRobotsGivesAGoalByClickAbortsAndSeesARefus
       },
       40s, 100ms))
       << read_file(temp_path("console_r1.log"));
-  // r1 drives along the lane y = 22 while we watch; r3 gets a long way to go, to be aborted.
+  // r1 drives along the lane y = 22 while we watch; r3 gets a long way to go along y = 8,
+  // to be aborted on its way.
   ASSERT_EQ(run("fleetmap", "goal console_r1 35 22").exit_code, 0);
-  ASSERT_EQ(run("fleetmap", "goal console_r3 36 10").exit_code, 0);
+  ASSERT_EQ(run("fleetmap", "goal console_r3 4 8").exit_code, 0);  // 51 m: half a minute
 
   web_ = std::make_unique<WebProcess>();
   open_browser();

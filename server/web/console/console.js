@@ -138,7 +138,9 @@ async function loadMaps() {
     app.maps[m.name] = m;
     const o = document.createElement('option');
     o.value = m.name;
-    o.textContent = m.name + (m.georeferenced ? ' (' + (m.crs || 'georeferenced') + ')' : '');
+    // A CRS may be a whole WKT: in the tooltip, not in the list.
+    o.textContent = m.name + (m.georeferenced ? ' (georeferenced)' : '');
+    if (m.crs) o.title = m.crs;
     sel.appendChild(o);
   }
   const wanted = new URLSearchParams(location.search).get('map');
@@ -224,7 +226,9 @@ function robotRow(r) {
     tbody.insertBefore(tr, after || null);
   }
   const c = tr.children;
-  c[0].textContent = r.name + (r.map !== app.mapName ? ' (' + (r.map || 'no map') + ')' : '');
+  c[0].textContent = r.name;
+  tr.classList.toggle('elsewhere', r.map !== app.mapName);
+  tr.title = r.map !== app.mapName ? r.name + ' is on map ' + (r.map || '(none)') : '';
   c[1].innerHTML = '';
   const dot = document.createElement('i');
   dot.className = 'dot state-' + r.state;

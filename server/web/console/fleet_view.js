@@ -6,6 +6,19 @@
 const ARROW_SVG = '<svg width="24" height="24" viewBox="0 0 24 24" aria-hidden="true">' +
   '<path d="M22 12 L3 3.5 L8 12 L3 20.5 Z"/></svg>';
 const TRAIL_MAX_POINTS = 5000;  // ten minutes at the robots' 3 Hz (SPEC 1), with room
+const TRAIL_GAP_MS = 10000;     // a silence this long cuts the line (poses come at 3 Hz)
+
+// Drops the oldest points beyond TRAIL_MAX_POINTS, and runs left empty.
+function trimRuns(runs) {
+  let n = runs.reduce((sum, r) => sum + r.length, 0);
+  while (n > TRAIL_MAX_POINTS && runs.length) {
+    const drop = Math.min(runs[0].length, n - TRAIL_MAX_POINTS);
+    runs[0].splice(0, drop);
+    n -= drop;
+    if (!runs[0].length && runs.length > 1) runs.shift();
+    else if (!runs[0].length) break;
+  }
+}
 
 class FleetView {
   constructor(view, onSelect) {
@@ -84,39 +97,47 @@ class FleetView {
 
   trail(name) {
     if (!this.trails[name]) {
-      const line = L.polyline([], { color: '#6e7781', weight: 2, opacity: 0.7, interactive: false });
+      const line = L.polyline([[]], { color: '#6e7781', weight: 2, opacity: 0.7, interactive: false });
       line.addTo(this.view.layers.trails);
       this.trails[name] = { line: line, loaded: false };
     }
     return this.trails[name];
   }
 
+  // The line is a list of runs (L.Polyline's nested form): the live states extend the last.
   appendTrail(name, ll) {
     const t = this.trail(name);
-    const pts = t.line.getLatLngs();
-    const last = pts.length ? pts[pts.length - 1] : null;
+    const runs = t.line.getLatLngs();
+    if (!runs.length || !Array.isArray(runs[0])) runs.splice(0, runs.length, []);
+    const run = runs[runs.length - 1];
+    const last = run.length ? run[run.length - 1] : null;
     if (last && last.lat === ll.lat && last.lng === ll.lng) return;
-    if (pts.length >= TRAIL_MAX_POINTS) pts.splice(0, pts.length - TRAIL_MAX_POINTS + 1);
-    pts.push(ll);
-    t.line.setLatLngs(pts);
+    run.push(ll);
+    trimRuns(runs);
+    t.line.setLatLngs(runs);
   }
 
-  // The recorded trajectory (GeoJSON points with t, in time order) goes before what
-  // the live feed appended meanwhile.
+  // The recorded trajectory (GeoJSON points with t) goes before what the live feed
+  // appended meanwhile; it is cut where the robot was silent (offline, or an earlier
+  // robot of the same name), so that no line jumps across the map.
   setHistory(name, fc) {
     const t = this.trail(name);
-    const history = [];
-    const points = (fc.features || []).filter((f) => f.geometry);
+    const points = (fc.features || []).filter((f) => f.geometry && f.geometry.type === 'Point');
     points.sort((a, b) => String((a.properties || {}).t).localeCompare(String((b.properties || {}).t)));
+    const runs = [];
+    let run = null, lastT = null;
     for (const f of points) {
-      const g = f.geometry;
-      if (g.type === 'Point') history.push(L.latLng(g.coordinates[1], g.coordinates[0]));
-      else if (g.type === 'LineString' || g.type === 'MultiPoint') {
-        for (const c of g.coordinates) history.push(L.latLng(c[1], c[0]));
-      }
+      const when = Date.parse((f.properties || {}).t);
+      if (!run || (isFinite(when) && isFinite(lastT) && when - lastT > TRAIL_GAP_MS)) runs.push(run = []);
+      run.push(L.latLng(f.geometry.coordinates[1], f.geometry.coordinates[0]));
+      lastT = when;
     }
     const live = t.line.getLatLngs();
-    t.line.setLatLngs(history.concat(live).slice(-TRAIL_MAX_POINTS));
+    const liveRun = live.length && Array.isArray(live[0]) ? live[live.length - 1] : live;
+    if (runs.length) runs[runs.length - 1].push(...liveRun);
+    else runs.push(liveRun.slice());
+    trimRuns(runs);
+    t.line.setLatLngs(runs);
     t.loaded = true;
   }
 
