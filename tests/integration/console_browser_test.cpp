@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 #include <thread>
@@ -116,6 +117,12 @@ class ConsoleBrowser : public ::testing::Test {
     ASSERT_FALSE(Chromium::find_executable().empty())
         << "chromium is not installed (no chromium or chromium-browser on PATH, FLEETMAP_CHROMIUM unset): "
            "run scripts/setup.sh, which installs it";
+  }
+  // The page threw nothing and logged no error while the test used it.
+  void TearDown() override {
+    if (page_) {
+      EXPECT_EQ(page_->page_errors(), "");
+    }
   }
 
   void open_browser() {
@@ -296,6 +303,14 @@ TEST_F(ConsoleBrowser, InspectorSeesNoWriteControlsAndAForcedWriteIsRefused) {
   ASSERT_EQ(run("fleetmap", "goal console_i1 20 5").exit_code, 0);
   const TaskRow open = newest_task("console_i1");
   ASSERT_EQ(open.state, "assigned");
+  // An object whose id is markup, off the robots' lanes.
+  const std::string scene = temp_path("console_scene.geojson");
+  write_file(scene, R"({"type":"FeatureCollection","fleetmap":{"frame":"map","units":"m"},"features":[
+{"type":"Feature","properties":{"kind":"object","id":"<img src=x onerror=window.injected=1>crate","tag":"box",
+ "z":[[0,0.5]]},
+ "geometry":{"type":"Polygon","coordinates":[[[24,30],[27,30],[27,32],[24,32],[24,30]]]}}]})");
+  const RunResult imported = run("fleetmap", "objects import " + kMap + " " + scene + " --replace --add-tags");
+  ASSERT_EQ(imported.exit_code, 0) << imported.err;
 
   web_ = std::make_unique<WebProcess>();
   open_browser();
@@ -321,6 +336,16 @@ TEST_F(ConsoleBrowser, InspectorSeesNoWriteControlsAndAForcedWriteIsRefused) {
   EXPECT_NE(text("#message").find("403"), std::string::npos) << text("#message");
   EXPECT_EQ(newest_task("console_i1").state, "assigned");
   EXPECT_EQ(scalar("SELECT COUNT(*) FROM tasks WHERE id = " + std::to_string(open.id) + " AND abort_requested_at IS NOT NULL"), 0);
+
+  // Names are data, shown as text: an object's id that is HTML stays text in its tooltip.
+  ASSERT_TRUE(page_->wait_for("document.querySelector('#map path.layer-objects')", 10s));
+  const json at = page_->evaluate("(() => { const p = fleetmapConsole.toContainerPoint(25.5, 31); const r ="
+                                  " document.getElementById('map').getBoundingClientRect(); return [p.x + r.left, p.y + r.top]; })()");
+  page_->call("Input.dispatchMouseEvent", {{"type", "mouseMoved"}, {"x", at[0]}, {"y", at[1]}});
+  EXPECT_TRUE(page_->wait_for("document.querySelector('.leaflet-tooltip') &&"
+                              " document.querySelector('.leaflet-tooltip').textContent.indexOf('<img') >= 0", 5s))
+      << page_->evaluate("document.querySelector('.leaflet-tooltip') && document.querySelector('.leaflet-tooltip').outerHTML").dump();
+  EXPECT_EQ(page_->evaluate("window.injected === undefined && !document.querySelector('.leaflet-tooltip img')"), true);
 
   // Log out: the form is back and the session is gone on the server too.
   page_->click_element("#logout");

@@ -149,6 +149,6 @@ class FleetView {
     }
     if (g) { g.setLatLng(ll); return; }
     this.goals[name] = L.circleMarker(ll, { radius: 5, color: '#1f6feb', weight: 2, fill: false, dashArray: '2 2' })
-      .bindTooltip('goal of ' + name).addTo(this.view.layers.goals);
+      .bindTooltip(plainText('goal of ' + name)).addTo(this.view.layers.goals);
   }
 }

@@ -3,6 +3,14 @@
 // robots). Switching frames rebuilds it: Leaflet cannot change a map's CRS.
 'use strict';
 
+// Tooltip content as text: Leaflet would take a string as HTML, and names, semantic
+// strings and GIS attributes are data (an imported layer may hold anything).
+function plainText(text) {
+  const span = document.createElement('span');
+  span.textContent = String(text);
+  return span;
+}
+
 const SHAPE_COLOURS = { stairs: '#8250df', ramp: '#9a6700' };
 
 function shapeColour(type) {
@@ -61,11 +69,11 @@ class MapView {
   setWalls(fc) {
     this.layers.walls.clearLayers();
     const layer = L.geoJSON(fc, {
-      style: (f) => ({ color: shapeColour(f.properties && f.properties.type), weight: 2, fill: false }),
+      style: (f) => ({ className: 'layer-walls', color: shapeColour(f.properties && f.properties.type), weight: 2, fill: false }),
       onEachFeature: (f, l) => {
         const p = f.properties || {};
-        l.bindTooltip('obstacle ' + p.obstacle + ' · ' + p.type + (p.h !== undefined && p.h !== null ? ' · h ' + p.h + ' m' : ''),
-          { sticky: true });
+        l.bindTooltip(plainText('obstacle ' + p.obstacle + ' · ' + p.type +
+          (p.h !== undefined && p.h !== null ? ' · h ' + p.h + ' m' : '')), { sticky: true });
       },
     });
     this.layers.walls.addLayer(layer);
@@ -82,8 +90,8 @@ class MapView {
     return L.latLngBounds(corners);
   }
 
-  setObjects(fc) { this.setOverlay('objects', fc, { color: '#bc4c00', weight: 1.5, fillOpacity: 0.15 }); }
-  setAvoided(fc) { this.setOverlay('avoided', fc, { color: '#cf222e', weight: 1, dashArray: '4 3', fillOpacity: 0.2 }); }
+  setObjects(fc) { this.setOverlay('objects', fc, { className: 'layer-objects', color: '#bc4c00', weight: 1.5, fillOpacity: 0.15 }); }
+  setAvoided(fc) { this.setOverlay('avoided', fc, { className: 'layer-avoided', color: '#cf222e', weight: 1, dashArray: '4 3', fillOpacity: 0.2 }); }
 
   setOverlay(name, fc, style) {
     this.layers[name].clearLayers();
@@ -92,8 +100,9 @@ class MapView {
       pointToLayer: (f, ll) => L.circleMarker(ll, Object.assign({ radius: 4 }, style)),
       onEachFeature: (f, l) => {
         const p = f.properties || {};
-        const label = p.name || p.label || p.kind || p.type || p.id;
-        if (label !== undefined) l.bindTooltip(String(label), { sticky: true });
+        const label = p.name || p.label || p.id || p.kind || p.type;
+        const what = p.tag || p.kind;
+        if (label !== undefined) l.bindTooltip(plainText(label + (what && what !== label ? ' (' + what + ')' : '')), { sticky: true });
       },
     }));
   }
@@ -112,7 +121,7 @@ class MapView {
     for (const n of topo.nodes || []) {
       if (!at[n.id]) continue;
       g.addLayer(L.circleMarker(at[n.id], { radius: 4, color: '#0969da', weight: 1, fillOpacity: 0.8 })
-        .bindTooltip((n.name || ('node ' + n.id)) + (n.type ? ' (' + n.type + ')' : '')));
+        .bindTooltip(plainText((n.name || ('node ' + n.id)) + (n.type ? ' (' + n.type + ')' : ''))));
     }
   }
 }
