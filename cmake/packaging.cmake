@@ -25,5 +25,8 @@ set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
   "libmysql++-dev, libmariadb-dev, nlohmann-json3-dev, libeigen3-dev, libboost-dev, libspdlog-dev, zlib1g-dev")
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "mariadb-server, mariadb-client")
+# fleetmap-web serves Leaflet from Debian's package (leaflet_dir); libssl comes in by
+# dpkg-shlibdeps like the other shared libraries.
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "libjs-leaflet")
 
 include(CPack)

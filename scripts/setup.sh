@@ -14,7 +14,7 @@ PACKAGES=(
   dpkg-dev file
   clang libclang-rt-14-dev llvm
   libgdal-dev gdal-bin libproj-dev proj-bin
-  libjs-leaflet chromium
+  libjs-leaflet chromium libssl-dev openssl
 )
 
 missing=()

@@ -125,6 +125,8 @@ HttpResponse Dispatcher::api(const HttpRequest& req, const std::string& path, co
   }
   if (path == "/api/ws")
     throw ApiError(426, "upgrade_required", "/api/ws is a WebSocket: send an Upgrade request with the session cookie");
+  // A session first: without one, no answer tells which endpoints exist.
+  require_session(req);
   const RouteMatch m = router_.match(method == "HEAD" ? "GET" : method, path);
   if (m.status == 404) throw ApiError(404, "not_found", "no endpoint " + path, 4);
   if (m.status == 405) {

@@ -24,7 +24,7 @@ nlohmann::json feed_robot_json(const RobotStatus& s, const std::optional<LonLat>
   nlohmann::json goal = nullptr;
   if (s.goal_x && s.goal_y) goal = nlohmann::json::array({*s.goal_x, *s.goal_y});
   return {{"name", s.name},
-          {"map", s.map},
+          {"map", s.map.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.map)},
           {"state", std::string(to_string(s.state))},
           {"x", number_or_null(s.x)},
           {"y", number_or_null(s.y)},
