@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <regex>
 #include <thread>
 
@@ -60,7 +61,8 @@ class WebProcess {
     child_ = std::make_unique<Child>(std::string(FLEETMAP_BIN_DIR) + "/fleetmap-web --config " +
                                      std::getenv("FLEETMAP_CONFIG") + " --http-port 0 --log-level debug >" + log_ +
                                      " 2>&1");
-    const std::regex address(R"(https?://[^\s:/]+:(\d+))");
+    // Its first line on stdout (docs/web-api.md "Running it").
+    const std::regex address(R"(fleetmap-web: listening on https?://[^\s/]+:(\d+)/)");
     for (int i = 0; i < 200 && port_ == 0; ++i) {
       std::smatch m;
       const std::string out = read_file(log_);
@@ -123,6 +125,7 @@ class ConsoleBrowser : public ::testing::Test {
     if (page_) {
       EXPECT_EQ(page_->page_errors(), "");
     }
+    if (HasFailure() && web_) std::cerr << "fleetmap-web log:\n" << web_->log().substr(0, 20000);
   }
 
   void open_browser() {
