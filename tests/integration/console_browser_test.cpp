@@ -358,7 +358,7 @@ TEST_F(ConsoleBrowser, InspectorSeesNoWriteControlsAndAForcedWriteIsRefused) {
 
 // A georeferenced map in WGS 84 (Web Mercator, no tiles): the layers come in lon/lat, and
 // a click still gives a goal in the map frame.
-TEST_F(ConsoleBrowser, Wgs84ViewOfAGeoreferencedMapStillTakesGoalsInTheMapFrame) {
+TEST_F(ConsoleBrowser, Wgs84ViewOfAGeoreferencedMapTakesGoalsAndPosesInTheMapFrame) {
   const std::string map = "console_geo";
   ensure_example_map(map);
   // The map's x axis 0.5 rad north of east, its origin in Zurich.
@@ -390,6 +390,21 @@ TEST_F(ConsoleBrowser, Wgs84ViewOfAGeoreferencedMapStillTakesGoalsInTheMapFrame)
   const TaskRow goal = newest_task("console_g1");
   EXPECT_NEAR(goal.gx, 20, 0.3) << text("#message");
   EXPECT_NEAR(goal.gy, 5, 0.3);
+
+  // An initial pose the same way, heading 90 degrees typed in.
+  page_->click_element("#pose-theta");
+  page_->insert_text("90");
+  page_->click_element("#mode-pose");
+  click_map(30, 8);
+  const std::string pose = "SELECT ROUND(ini_x * 10), ROUND(ini_y * 10), ROUND(ini_theta * 100) FROM robots "
+                           "WHERE db_user = 'console_g1' AND removed_at IS NULL";
+  ASSERT_TRUE(wait_until([&] { return scalar(pose) != 100; }, 10s)) << text("#message");  // from pose-ini's 10
+  auto c = admin();
+  auto r = c->query(pose).store();
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_NEAR(static_cast<double>(r[0][0]), 300, 3) << text("#message");
+  EXPECT_NEAR(static_cast<double>(r[0][1]), 80, 3);
+  EXPECT_EQ(static_cast<long long>(r[0][2]), 157);  // pi/2
 }
 
 }  // namespace
