@@ -121,7 +121,7 @@ function stop() {
   app.tasks = {};
   $('robots').textContent = '';
   $('tasks').textContent = '';
-  fleet.selected = null;
+  fleet.removeAll();
   setMode(null);
   updateControls();
 }

@@ -39,6 +39,7 @@ class FleetView {
     const frame = this.view.frame;
     const ll = onMap ? frame.robotLatLng(r) : null;
     let m = this.markers[r.name];
+    if (!onMap) { this.remove(r.name); return; }  // its trail too: it belongs to another map
     if (!ll) {
       if (m) { this.view.layers.robots.removeLayer(m); delete this.markers[r.name]; }
       this.setGoal(r.name, null);
@@ -85,6 +86,14 @@ class FleetView {
     delete this.markers[name];
     delete this.trails[name];
     this.setGoal(name, null);
+  }
+
+  // Signed out: nothing of the fleet stays on screen.
+  removeAll() {
+    for (const name of new Set(Object.keys(this.markers).concat(Object.keys(this.trails), Object.keys(this.goals)))) {
+      this.remove(name);
+    }
+    this.selected = null;
   }
 
   select(name) {
