@@ -149,7 +149,9 @@ struct WsImpl : FeedClient::Impl {
     tcp_layer.socket().open(tcp::v4());
     if (receive_buffer > 0) tcp_layer.socket().set_option(net::socket_base::receive_buffer_size(receive_buffer));
     tcp_layer.expires_after(std::chrono::seconds(10));
-    tcp_layer.connect(endpoints);
+    // One endpoint, on the socket opened above: connecting to a range reopens the
+    // socket and would lose its receive buffer size.
+    tcp_layer.socket().connect(*endpoints.begin());
     if constexpr (!std::is_same_v<Next, beast::tcp_stream>) ws->next_layer().handshake(ssl::stream_base::client);
     ws->set_option(websocket::stream_base::decorator([cookie, origin](websocket::request_type& req) {
       if (!cookie.empty()) req.set(http::field::cookie, "fleetmap_session=" + cookie);

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -277,6 +278,9 @@ class WebFeed : public WebHttp {
  protected:
   void SetUp() override {
     ensure_example_map("web_map");
+    // Georeferenced, so that states carry lonlat: the map origin at 45.7 N, 4.8 E.
+    const RunResult g = run("fleetmap", "map georef web_map 45.7 4.8");
+    ASSERT_EQ(g.exit_code, 0) << g.err;
     robot_pw_ = add_robot("web_r1", "web_map");
     server_ = std::make_unique<ServerProcess>("--alive-period 0.5", "web_server.log");
     robot_ = std::make_unique<SqlRobot>("web_r1", robot_pw_);
@@ -363,6 +367,11 @@ TEST_F(WebFeed, HelloEveryRobotThenARobotsMove) {
   EXPECT_EQ(moved["y"], 4.5);
   EXPECT_EQ(moved["theta"], 0.5);
   EXPECT_EQ(moved["state"], "moving");
+  // 3.25 m east and 4.5 m north of the origin: about 4.2e-5 degrees of longitude and
+  // 4.0e-5 of latitude.
+  ASSERT_TRUE(moved["lonlat"].is_array()) << moved.dump();
+  EXPECT_NEAR(moved["lonlat"][0].get<double>(), 4.8 + 3.25 / (111320 * std::cos(45.7 * M_PI / 180)), 1e-6);
+  EXPECT_NEAR(moved["lonlat"][1].get<double>(), 45.7 + 4.5 / 111132, 1e-6);
   const std::string seen = moved["last_seen"];
   EXPECT_EQ(seen.size() >= 20 ? seen.substr(10, 1) + seen.substr(seen.size() - 1) : seen, "TZ") << seen;
 }
@@ -386,9 +395,13 @@ TEST_F(WebFeed, ANewTaskArrivesAsATasksMessage) {
   for (const char* key : {"state", "created_at", "updated_at", "reason"}) EXPECT_TRUE(got.contains(key)) << key;
 }
 
-// Bytes the kernel holds unsent on the IPv4 loopback connection from port `from` to
-// port `to` (the tx_queue column of /proc/net/tcp); -1 when there is no such connection.
-long long unsent_bytes(unsigned short from, unsigned short to) {
+// The kernel's queues of the IPv4 loopback connection from port `from` to port `to`
+// (/proc/net/tcp): bytes written but not yet taken by the peer, and bytes received but
+// not yet read; {-1, -1} when there is no such connection.
+struct SocketQueues {
+  long long unsent = -1, unread = -1;
+};
+SocketQueues socket_queues(unsigned short from, unsigned short to) {
   std::istringstream in(read_file("/proc/net/tcp"));
   std::string line;
   std::getline(in, line);  // the header
@@ -401,39 +414,77 @@ long long unsent_bytes(unsigned short from, unsigned short to) {
     f >> slot >> local >> remote >> state >> queues;
     if (local.size() >= 5 && remote.size() >= 5 && local.substr(local.size() - 5) == want_local &&
         remote.substr(remote.size() - 5) == want_remote)
-      return std::stoll(queues.substr(0, queues.find(':')), nullptr, 16);
+      return {std::stoll(queues.substr(0, queues.find(':')), nullptr, 16),
+              std::stoll(queues.substr(queues.find(':') + 1), nullptr, 16)};
   }
-  return -1;
+  return {};
 }
 
 TEST_F(WebFeed, AClientThatNeverReadsDoesNotStallAnother) {
+  // Eight robots moving at once: frames of a few KiB every feed period, more than the
+  // stalled client's socket buffers hold within the test.
+  std::vector<std::unique_ptr<SqlRobot>> fleet;
+  for (int k = 0; k < 8; ++k) {
+    const std::string name = "web_s" + std::to_string(k);
+    fleet.push_back(std::make_unique<SqlRobot>(name, add_robot(name, "web_map")));
+    fleet.back()->send("Ready", R"({"magic": 7})");
+    ASSERT_EQ(fleet.back()->receive(2).size(), 2u) << name;
+  }
   WebClient op = signed_in(Role::Operator);
-  // A small receive buffer, never read: the frames sent to it back up in the kernel and
-  // then in the server's write, which never completes.
-  FeedClient stalled(op, op.cookie, "", 2048);
+  FeedClient stalled(op, op.cookie, "", 2048);  // never read
   FeedClient reader(op, op.cookie);
   ASSERT_TRUE(reader.next());  // hello
   ASSERT_TRUE(reader.next());  // every robot
-  // A move every 30 ms for 6 s: a frame per feed period for each client, far more than
-  // the stalled one's buffers hold.
   std::set<double> seen;
-  const auto started = std::chrono::steady_clock::now();
+  size_t reader_bytes = 0;
   double x = 0;
+  const auto started = std::chrono::steady_clock::now();
   for (int i = 1; i <= 200; ++i) {
     x = 1 + 0.01 * i;
-    robot_->send("SendPos", json{{"x", x}, {"y", 2.0}, {"theta", 0.0}, {"v", 0.3}}.dump());
-    std::this_thread::sleep_for(30ms);
-    while (auto m = reader.next(1ms))
-      if (const json* r = robot_in(*m, "web_r1"); r && (*r)["x"].is_number()) seen.insert((*r)["x"].get<double>());
+    for (auto& r : fleet) r->send("SendPos", json{{"x", x}, {"y", 2.0}, {"theta", 0.0}, {"v", 0.3}}.dump());
+    std::this_thread::sleep_for(25ms);
+    while (auto m = reader.next(1ms)) {
+      reader_bytes += m->dump().size();
+      if (const json* r = robot_in(*m, "web_s0"); r && (*r)["x"].is_number()) seen.insert((*r)["x"].get<double>());
+    }
   }
   ASSERT_TRUE(until_message(reader, [&](const json& m) {
-    const json* r = robot_in(m, "web_r1");
+    const json* r = robot_in(m, "web_s7");
     return r && (*r)["x"].is_number() && std::abs((*r)["x"].get<double>() - x) < 1e-9;
   }, 5s)) << "the last move never reached the reading client";
-  EXPECT_LT(std::chrono::steady_clock::now() - started, 20s);
+  EXPECT_LT(std::chrono::steady_clock::now() - started, 30s);
   EXPECT_GE(seen.size(), 40u) << "the reading client got a fresh state about every feed period";
-  EXPECT_GT(unsent_bytes(web_->port(), stalled.local_port()), 0)
-      << "the stalled client's frames should be backed up in the server's socket";
+  // What the server wrote towards the stalled client is all still in the kernel's
+  // queues (it read nothing), and it is much less than what the reader got: the
+  // server's write to it stopped completing and the rest was coalesced, not queued.
+  const SocketQueues server_side = socket_queues(web_->port(), stalled.local_port());
+  const SocketQueues client_side = socket_queues(stalled.local_port(), web_->port());
+  ASSERT_GE(server_side.unsent, 0);
+  ASSERT_GE(client_side.unread, 0);
+  EXPECT_LT(static_cast<size_t>(server_side.unsent + client_side.unread), reader_bytes / 2)
+      << "reader got " << reader_bytes << " bytes; towards the stalled client: " << server_side.unsent
+      << " unsent, " << client_side.unread << " unread";
+  // When it reads at last, it gets what the kernel held and then the latest state of
+  // every robot at once: far less than the reader got, ending with the last move. A
+  // server that queued every frame for it would send it all of them now.
+  size_t stalled_bytes = 0, stalled_frames = 0;
+  std::map<std::string, double> last_x;
+  while (auto m = stalled.next(2s)) {
+    stalled_bytes += m->dump().size();
+    ++stalled_frames;
+    if (m->value("type", "") == "robots")
+      for (const auto& r : (*m)["robots"])
+        if (r["x"].is_number()) last_x[r["name"]] = r["x"];
+    bool all_latest = true;
+    for (int k = 0; k < 8; ++k) {
+      auto it = last_x.find("web_s" + std::to_string(k));
+      all_latest = all_latest && it != last_x.end() && std::abs(it->second - x) < 1e-9;
+    }
+    if (all_latest) break;
+  }
+  for (int k = 0; k < 8; ++k) EXPECT_NEAR(last_x["web_s" + std::to_string(k)], x, 1e-9) << "web_s" << k;
+  EXPECT_LT(stalled_bytes, reader_bytes / 2) << stalled_frames << " frames after the stall; the reader got "
+                                             << reader_bytes << " bytes";
   EXPECT_EQ(op.get("/api/session").status, 200);
 }
 

@@ -67,8 +67,8 @@ void FleetFeed::run() {
 
 void FleetFeed::poll(mysqlpp::Connection& c) {
   // Georeferences change rarely (fleetmap map georef): reread about every 2 s.
-  if (++polls_since_maps_ * period_ms_ >= 2000) {
-    polls_since_maps_ = 0;
+  if (const auto now = std::chrono::steady_clock::now(); now >= maps_due_) {
+    maps_due_ = now + std::chrono::seconds(2);
     std::map<std::string, Georef> next;
     for (const MapInfo& m : MapStore(c).list()) {
       auto old = georefs_.find(m.name);

@@ -3,6 +3,7 @@
 // database every feed_period_ms with the web account, diffs the robots' states against
 // the previous poll, reads the tasks changed since then, and hands both to the PushHub.
 #include <atomic>
+#include <chrono>
 #include <map>
 #include <memory>
 #include <string>
@@ -53,7 +54,7 @@ class FleetFeed {
     std::shared_ptr<GeoTransform> transform;  // null: not georeferenced
   };
   std::map<std::string, Georef> georefs_;
-  int polls_since_maps_ = 1 << 30;
+  std::chrono::steady_clock::time_point maps_due_{};  // the first poll reads them
 };
 
 }  // namespace fleetmap::web

@@ -6,20 +6,23 @@ namespace fleetmap::web {
 
 void PushHub::subscribe(const std::shared_ptr<PushClient>& client) {
   std::lock_guard lock(mutex_);
+  clients_.push_back(client);
+  if (!primed_) return;  // its first message comes with the first poll
   FeedUpdate all;
   for (const auto& [name, r] : robots_) all.robots.push_back(r);
   client->push(all, true);
-  clients_.push_back(client);
 }
 
 void PushHub::publish(const FeedUpdate& update) {
-  if (update.robots.empty() && update.tasks.empty()) return;
   std::lock_guard lock(mutex_);
+  const bool first = !primed_;
+  primed_ = true;
+  if (!first && update.robots.empty() && update.tasks.empty()) return;
   for (const auto& r : update.robots) robots_[r.value("name", std::string())] = r;
   std::erase_if(clients_, [&](const std::weak_ptr<PushClient>& w) {
     auto c = w.lock();
     if (!c) return true;
-    c->push(update, false);
+    c->push(update, first);
     return false;
   });
 }

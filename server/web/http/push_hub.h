@@ -29,9 +29,11 @@ class PushClient {
 
 class PushHub {
  public:
-  // Sends the client the state of every robot now; it then gets every publish() until
-  // it is destroyed (the hub holds it weakly).
+  // Sends the client the state of every robot (at once, or with the feed's first poll
+  // when it has not come yet); the client then gets every publish() until it is
+  // destroyed (the hub holds it weakly).
   void subscribe(const std::shared_ptr<PushClient>& client);
+  // The feed's first publish holds every robot (possibly none) and primes the hub.
   void publish(const FeedUpdate& update);
   size_t clients() const;
   size_t robots() const;
@@ -40,6 +42,7 @@ class PushHub {
   mutable std::mutex mutex_;
   std::vector<std::weak_ptr<PushClient>> clients_;
   std::map<std::string, nlohmann::json> robots_;  // the latest state of each robot
+  bool primed_ = false;  // the first poll came: robots_ holds every robot
 };
 
 }  // namespace fleetmap::web

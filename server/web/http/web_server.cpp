@@ -38,6 +38,7 @@ WebServer::WebServer(WebConfig config, DbSettings web, std::vector<Route> routes
       workers_(static_cast<size_t>(config_.workers)),
       tls_(config_.tls() ? tls_context(config_.tls_cert, config_.tls_key) : nullptr),
       acceptor_(ioc_),
+      sweep_(ioc_),
       runtime_{dispatcher_, hub_, workers_, config_} {}
 
 WebServer::~WebServer() { stop(); }
@@ -56,6 +57,7 @@ unsigned short WebServer::start() {
   acceptor_.listen(net::socket_base::max_listen_connections);
   started_ = true;
   accept();
+  sweep_sessions();
   for (int i = 0; i < config_.threads; ++i) io_threads_.emplace_back([this] { ioc_.run(); });
   feed_.start();
   return acceptor_.local_endpoint().port();
@@ -84,12 +86,25 @@ void WebServer::accept() {
   });
 }
 
+void WebServer::sweep_sessions() {
+  sweep_.expires_after(std::chrono::seconds(60));
+  sweep_.async_wait([this](boost::system::error_code ec) {
+    if (ec || stopped_) return;
+    // Closing a connection may wait on the network: not on an IO thread.
+    net::post(workers_, [this] {
+      if (const size_t n = dispatcher_.sessions().expire()) spdlog::info("{} idle session(s) ended", n);
+    });
+    sweep_sessions();
+  });
+}
+
 void WebServer::stop() {
   if (stopped_.exchange(true) || !started_) return;
   feed_.stop();
   net::post(ioc_, [this] {
     boost::system::error_code ignored;
     acceptor_.close(ignored);
+    sweep_.cancel();
   });
   ioc_.stop();
   for (auto& t : io_threads_) t.join();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <boost/asio/io_context.hpp>
+#include <boost/asio/steady_timer.hpp>
 #include <boost/asio/ip/tcp.hpp>
 #include <boost/asio/ssl/context.hpp>
 #include <boost/asio/thread_pool.hpp>
@@ -42,6 +43,7 @@ class WebServer {
 
  private:
   void accept();
+  void sweep_sessions();  // every minute: idle sessions end, their connections close
 
   WebConfig config_;
   Dispatcher dispatcher_;
@@ -51,6 +53,7 @@ class WebServer {
   boost::asio::thread_pool workers_;
   std::unique_ptr<boost::asio::ssl::context> tls_;
   boost::asio::ip::tcp::acceptor acceptor_;
+  boost::asio::steady_timer sweep_;
   WebRuntime runtime_;
   std::vector<std::thread> io_threads_;
   std::atomic<bool> stopped_{false};

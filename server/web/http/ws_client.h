@@ -17,6 +17,8 @@
 
 namespace fleetmap::web {
 
+inline constexpr int kSendBuffer = 32 * 1024;
+
 template <class Stream>
 class WsClient : public PushClient, public std::enable_shared_from_this<WsClient<Stream>> {
  public:
@@ -28,6 +30,12 @@ class WsClient : public PushClient, public std::enable_shared_from_this<WsClient
     // The WebSocket keeps its own timeouts: pings at half the idle time, closed when the
     // peer answers nothing for the whole of it.
     boost::beast::get_lowest_layer(ws_).expires_never();
+    // A small kernel send buffer (Linux doubles it): a slow client's backlog in the
+    // kernel stays at a few frames, so it gets coalesced, fresh states sooner, and a
+    // stalled one costs 64 KiB of kernel memory rather than the autotuned megabytes.
+    boost::system::error_code ignored;
+    boost::beast::get_lowest_layer(ws_).socket().set_option(boost::asio::socket_base::send_buffer_size(kSendBuffer),
+                                                             ignored);
     ws_.set_option(websocket::stream_base::timeout::suggested(boost::beast::role_type::server));
     ws_.set_option(websocket::stream_base::decorator(
         [](websocket::response_type& res) { res.set(boost::beast::http::field::server, "fleetmap-web"); }));

@@ -103,6 +103,7 @@ TEST(PushHub, NewClientsGetEveryRobotFirst) {
 
 TEST(PushHub, AStalledClientNeitherGrowsNorDelaysTheOthers) {
   PushHub hub;
+  hub.publish({{robot("r0", -1)}, {}});  // the feed's first poll
   auto stalled = std::make_shared<FakeClient>();
   auto reader = std::make_shared<FakeClient>();
   hub.subscribe(stalled);
@@ -122,6 +123,25 @@ TEST(PushHub, AStalledClientNeitherGrowsNorDelaysTheOthers) {
   const auto caught_up = stalled->drain();
   ASSERT_EQ(caught_up.size(), 2u);
   EXPECT_EQ(caught_up[0]["robots"][9]["x"], 4999);
+}
+
+TEST(PushHub, AClientBeforeTheFirstPollGetsEveryRobotWithIt) {
+  PushHub hub;
+  auto early = std::make_shared<FakeClient>();
+  hub.subscribe(early);
+  EXPECT_TRUE(early->drain().empty()) << "nothing to tell before the feed's first poll";
+  hub.publish({{robot("r1", 1), robot("r2", 2)}, {}});
+  const auto frames = early->drain();
+  ASSERT_EQ(frames.size(), 1u);
+  EXPECT_EQ(frames[0]["robots"].size(), 2u);
+  // An empty fleet: the first message still comes, empty.
+  PushHub empty;
+  auto c = std::make_shared<FakeClient>();
+  empty.subscribe(c);
+  empty.publish({});
+  const auto none = c->drain();
+  ASSERT_EQ(none.size(), 1u);
+  EXPECT_TRUE(none[0]["robots"].empty());
 }
 
 TEST(PushHub, DropsClientsThatAreGone) {
