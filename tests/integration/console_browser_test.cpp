@@ -363,8 +363,15 @@ TEST_F(ConsoleBrowser, Wgs84ViewOfAGeoreferencedMapTakesGoalsAndPosesInTheMapFra
   ensure_example_map(map);
   // The map's x axis 0.5 rad north of east, its origin in Zurich.
   ASSERT_EQ(run("fleetmap", "map georef " + map + " 47.3769 8.5417 --heading 0.5").exit_code, 0);
-  add_robot("console_g1", map);
+  add_robot("console_g1", map);  // no process: for a goal and a pose
   ASSERT_EQ(run("fleetmap", "pose-ini console_g1 10 5 0").exit_code, 0);
+  add_robot("console_g2", map);  // live: drawn by its lonlat
+  ASSERT_EQ(run("fleetmap", "pose-ini console_g2 10 22 0.3").exit_code, 0);
+  ServerProcess server("", "console_geo_server.log");
+  auto robot = start_robot("console_g2", "10 22 0.3", 7);
+  ASSERT_TRUE(wait_until([] { return scalar("SELECT COUNT(*) FROM robots WHERE db_user = 'console_g2' AND removed_at IS NULL"
+                                            " AND x IS NOT NULL") == 1; }, 40s, 100ms))
+      << read_file(temp_path("console_g2.log"));
 
   web_ = std::make_unique<WebProcess>();
   open_browser();
@@ -380,6 +387,22 @@ TEST_F(ConsoleBrowser, Wgs84ViewOfAGeoreferencedMapTakesGoalsAndPosesInTheMapFra
   // Web Mercator is north-up: the frame's rotation is the georeference's heading.
   EXPECT_NEAR(fit["rotation"].get<double>(), 0.5, 0.01) << fit.dump();
   EXPECT_EQ(page_->evaluate("fleetmapConsole.map.options.crs === L.CRS.EPSG3857"), true);
+
+  // The live robot: its marker at the server's lonlat, which is where the fit puts its
+  // map-frame x, y (within a pixel), its arrow turned by theta plus the frame's rotation.
+  ASSERT_TRUE(page_->wait_for("fleetmapConsole.markers.console_g2 && fleetmapConsole.robots.console_g2.lonlat", 10s))
+      << page_->evaluate("JSON.stringify(fleetmapConsole.robots.console_g2 || null)").dump();
+  const json live = page_->evaluate(
+      "(() => { const r = fleetmapConsole.robots.console_g2, m = fleetmapConsole.markers.console_g2;"
+      " const a = fleetmapConsole.toContainerPoint(r.x, r.y), b = fleetmapConsole.map.latLngToContainerPoint(m.getLatLng());"
+      " const turn = parseFloat(m.getElement().querySelector('.arrow').style.transform.replace('rotate(', ''));"
+      " const want = -(r.theta + fleetmapConsole.wgs84Fit.rotation);"
+      " const d = Math.atan2(Math.sin(turn - want), Math.cos(turn - want));"
+      " return {px: Math.hypot(a.x - b.x, a.y - b.y), lonlat: m.getLatLng().lng === r.lonlat[0] &&"
+      " m.getLatLng().lat === r.lonlat[1], heading: Math.abs(d)}; })()");
+  EXPECT_LT(live["px"].get<double>(), 1.0) << live.dump();
+  EXPECT_EQ(live["lonlat"], true) << live.dump();
+  EXPECT_LT(live["heading"].get<double>(), 0.01) << live.dump();
 
   const long long before = task_count();
   page_->click_element("#robots tr[data-robot=\"console_g1\"]");
