@@ -63,12 +63,12 @@ std::string base64_decode(const std::string& in) {
   return out;
 }
 
-// GET http://127.0.0.1:port<target>: the body.
-std::string http_get(unsigned short port, const std::string& target) {
+// GET (or PUT) http://127.0.0.1:port<target>: the body.
+std::string http_get(unsigned short port, const std::string& target, http::verb verb = http::verb::get) {
   net::io_context ioc;
   tcp::socket socket(ioc);
   socket.connect(tcp::endpoint(net::ip::make_address("127.0.0.1"), port));
-  http::request<http::empty_body> req(http::verb::get, target, 11);
+  http::request<http::empty_body> req(verb, target, 11);
   req.set(http::field::host, "127.0.0.1:" + std::to_string(port));
   http::write(socket, req);
   beast::flat_buffer buffer;
@@ -77,7 +77,8 @@ std::string http_get(unsigned short port, const std::string& target) {
   beast::error_code ec;
   socket.shutdown(tcp::socket::shutdown_both, ec);
   if (res.result() != http::status::ok)
-    throw CdpError("DevTools GET " + target + ": HTTP " + std::to_string(res.result_int()));
+    throw CdpError("DevTools " + std::string(http::to_string(verb)) + " " + target + ": HTTP " +
+                   std::to_string(res.result_int()));
   return res.body();
 }
 
@@ -221,7 +222,8 @@ CdpPage::CdpPage(unsigned short port, std::chrono::milliseconds timeout)
         break;
       }
     if (ws_url.empty() && Clock::now() >= until) {
-      const auto t = nlohmann::json::parse(http_get(port, "/json/new?about:blank"));
+      // Chromium takes /json/new only as PUT.
+      const auto t = nlohmann::json::parse(http_get(port, "/json/new?about:blank", http::verb::put));
       ws_url = t.at("webSocketDebuggerUrl").get<std::string>();
     }
     if (ws_url.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
