@@ -193,7 +193,7 @@ async function showMap(name, wgs84) {
 
 function robotChanged(r) {
   app.robots[r.name] = r;
-  const onMap = r.map === app.mapName;
+  const onMap = view.map !== null && app.mapName !== null && r.map === app.mapName;
   fleet.update(r, onMap);
   if (onMap && fleet.markers[r.name] && !fleet.trail(r.name).loaded && !fleet.trail(r.name).loading) loadTrail(r.name);
   robotRow(r);

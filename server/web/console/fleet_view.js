@@ -81,6 +81,7 @@ class FleetView {
   }
 
   remove(name) {
+    if (!this.view.layers) return;  // no map drawn yet: nothing on it
     if (this.markers[name]) this.view.layers.robots.removeLayer(this.markers[name]);
     if (this.trails[name]) this.view.layers.trails.removeLayer(this.trails[name].line);
     delete this.markers[name];
