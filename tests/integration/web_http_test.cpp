@@ -452,7 +452,7 @@ TEST_F(WebFeed, AClientThatNeverReadsDoesNotStallAnother) {
     const json* r = robot_in(m, "web_s7");
     return r && (*r)["x"].is_number() && std::abs((*r)["x"].get<double>() - x) < 1e-9;
   }, 5s)) << "the last move never reached the reading client";
-  EXPECT_LT(std::chrono::steady_clock::now() - started, 30s);
+  EXPECT_LT(std::chrono::steady_clock::now() - started, 60s);
   EXPECT_GE(seen.size(), 40u) << "the reading client got a fresh state about every feed period";
   // What the server wrote towards the stalled client is all still in the kernel's
   // queues (it read nothing), and it is much less than what the reader got: the

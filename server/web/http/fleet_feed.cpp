@@ -66,17 +66,19 @@ void FleetFeed::run() {
 }
 
 void FleetFeed::poll(mysqlpp::Connection& c) {
-  // Georeferences change rarely (fleetmap map georef): reread about every 2 s.
+  // Georeferences change rarely (fleetmap map georef): reread about every 2 s; a
+  // transform is built once per georeference (PROJ's setup is the costly part).
   if (const auto now = std::chrono::steady_clock::now(); now >= maps_due_) {
     maps_due_ = now + std::chrono::seconds(2);
     std::map<std::string, Georef> next;
     for (const MapInfo& m : MapStore(c).list()) {
       auto old = georefs_.find(m.name);
-      if (old != georefs_.end() && old->second.revision == m.revision && (old->second.transform != nullptr) == m.georef.has_value()) {
+      // Rebuilt when the map was replaced or georeferenced anew (same revision).
+      if (old != georefs_.end() && old->second.revision == m.revision && old->second.georef == m.georef) {
         next[m.name] = old->second;
         continue;
       }
-      Georef g{m.revision, nullptr};
+      Georef g{m.revision, m.georef, nullptr};
       if (m.georef) {
         try {
           g.transform = std::make_shared<GeoTransform>(*m.georef);
@@ -93,7 +95,7 @@ void FleetFeed::poll(mysqlpp::Connection& c) {
   std::vector<nlohmann::json> robots;
   for (const RobotStatus& s : FleetStore(c).status()) {
     std::optional<LonLat> ll;
-    if (s.x && s.y) ll = lonlat(c, s.map, *s.x, *s.y);
+    if (s.x && s.y) ll = lonlat(s.map, *s.x, *s.y);
     robots.push_back(feed_robot_json(s, ll));
   }
   update.robots = diff_.changed(robots);
@@ -110,7 +112,7 @@ void FleetFeed::poll(mysqlpp::Connection& c) {
   hub_.publish(update);
 }
 
-std::optional<LonLat> FleetFeed::lonlat(mysqlpp::Connection&, const std::string& map, double x, double y) {
+std::optional<LonLat> FleetFeed::lonlat(const std::string& map, double x, double y) const {
   auto it = georefs_.find(map);
   if (it == georefs_.end() || !it->second.transform) return std::nullopt;
   try {

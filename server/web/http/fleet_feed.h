@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <thread>
@@ -38,7 +39,7 @@ class FleetFeed {
  private:
   void run();
   void poll(mysqlpp::Connection& c);
-  std::optional<LonLat> lonlat(mysqlpp::Connection& c, const std::string& map, double x, double y);
+  std::optional<LonLat> lonlat(const std::string& map, double x, double y) const;
 
   DbSettings web_;
   int period_ms_;
@@ -51,7 +52,8 @@ class FleetFeed {
   // Georeferenced maps by name: their revision and transform, reread every few seconds.
   struct Georef {
     unsigned revision = 0;
-    std::shared_ptr<GeoTransform> transform;  // null: not georeferenced
+    std::optional<MapGeoref> georef;
+    std::shared_ptr<GeoTransform> transform;  // null: not georeferenced (or PROJ refused it)
   };
   std::map<std::string, Georef> georefs_;
   std::chrono::steady_clock::time_point maps_due_{};  // the first poll reads them
