@@ -297,6 +297,19 @@ TEST_F(ConsoleBrowser, OperatorWatchesRobotsGivesAGoalByClickAbortsAndSeesARefus
   std::this_thread::sleep_for(1s);
   EXPECT_EQ(task_count(), tasks);
   EXPECT_EQ(page_->evaluate("document.querySelectorAll('#tasks tr').length").get<long long>(), rows);
+
+  // Reopened (the session cookie still holds): r2, stopped at its goal, has its way from
+  // x = 10 to 20 drawn from the recorded trajectory alone.
+  page_->navigate(web_->url() + "/?map=" + kMap);
+  const std::string trail = "fleetmapConsole.trails.console_r2";
+  ASSERT_TRUE(page_->wait_for("fleetmapConsole.session && " + trail + " && " + trail + ".loaded", 15s))
+      << page_->page_errors();
+  EXPECT_TRUE(page_->evaluate("document.getElementById('login').hidden") == true) << "no second sign-in";
+  const json span = page_->evaluate("(() => { const xs = " + trail + ".line.getLatLngs().flat().map((p) => p.lng);"
+                                    " return [xs.length, Math.min(...xs), Math.max(...xs)]; })()");
+  EXPECT_GT(span[0].get<int>(), 10) << span.dump();
+  EXPECT_LT(span[1].get<double>(), 11.5) << span.dump();
+  EXPECT_GT(span[2].get<double>(), 19) << span.dump();
 }
 
 TEST_F(ConsoleBrowser, InspectorSeesNoWriteControlsAndAForcedWriteIsRefused) {

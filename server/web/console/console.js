@@ -408,6 +408,7 @@ window.fleetmapConsole = {
   get wgs84Fit() { return view.frame.fit ? { residual: view.frame.fit.residual, rotation: view.frame.fit.rotation } : null; },
   get robots() { return app.robots; },
   get markers() { return fleet.markers; },
+  get trails() { return fleet.trails; },  // name -> {line: L.Polyline of runs, loaded}
   get tasks() { return app.tasks; },
   get session() { return app.session; },
   get lastError() { return app.lastError; },
