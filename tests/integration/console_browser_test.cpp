@@ -113,7 +113,17 @@ long long task_count() { return scalar("SELECT COUNT(*) FROM tasks"); }
 
 class ConsoleBrowser : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { ensure_example_map(kMap); }
+  static void SetUpTestSuite() {
+    ensure_example_map(kMap);
+    // One object, a crate tagged box off the robots' lanes, whose id is markup.
+    const std::string scene = temp_path("console_scene.geojson");
+    write_file(scene, R"({"type":"FeatureCollection","fleetmap":{"frame":"map","units":"m"},"features":[
+{"type":"Feature","properties":{"kind":"object","id":"<img src=x onerror=window.injected=1>crate","tag":"box",
+ "z":[[0,0.5]]},
+ "geometry":{"type":"Polygon","coordinates":[[[24,30],[27,30],[27,32],[24,32],[24,30]]]}}]})");
+    const RunResult imported = run("fleetmap", "objects import " + kMap + " " + scene + " --replace --add-tags");
+    if (imported.exit_code != 0) throw std::runtime_error("objects import: " + imported.err);
+  }
   // Before any robot or server is started: a missing browser is said at once.
   void SetUp() override {
     ASSERT_FALSE(Chromium::find_executable().empty())
@@ -310,6 +320,20 @@ TEST_F(ConsoleBrowser, OperatorWatchesRobotsGivesAGoalByClickAbortsAndSeesARefus
   EXPECT_GT(span[0].get<int>(), 10) << span.dump();
   EXPECT_LT(span[1].get<double>(), 11.5) << span.dump();
   EXPECT_GT(span[2].get<double>(), 19) << span.dump();
+
+  // A goal by meaning: near the object tagged box (the crate, 24..27 x 30..32).
+  const long long before_tag = task_count();
+  page_->click_element("#robots tr[data-robot=\"console_r2\"]");
+  ASSERT_TRUE(page_->wait_for("!document.getElementById('goal-named-submit').disabled", 5s));
+  page_->click_element("#goal-name");
+  page_->insert_text("box");
+  page_->click_element("#goal-named-submit");
+  ASSERT_TRUE(wait_until([&] { return task_count() == before_tag + 1; }, 10s)) << text("#message");
+  const TaskRow near = newest_task("console_r2");
+  EXPECT_TRUE(near.gx > 22 && near.gx < 29 && near.gy > 28 && near.gy < 34) << near.gx << ", " << near.gy;
+  EXPECT_TRUE(page_->wait_for("document.getElementById('message').textContent.indexOf('Task #" +
+                              std::to_string(near.id) + "') === 0", 5s))
+      << text("#message");
 }
 
 TEST_F(ConsoleBrowser, InspectorSeesNoWriteControlsAndAForcedWriteIsRefused) {
@@ -319,14 +343,6 @@ TEST_F(ConsoleBrowser, InspectorSeesNoWriteControlsAndAForcedWriteIsRefused) {
   ASSERT_EQ(run("fleetmap", "goal console_i1 20 5").exit_code, 0);
   const TaskRow open = newest_task("console_i1");
   ASSERT_EQ(open.state, "assigned");
-  // An object whose id is markup, off the robots' lanes.
-  const std::string scene = temp_path("console_scene.geojson");
-  write_file(scene, R"({"type":"FeatureCollection","fleetmap":{"frame":"map","units":"m"},"features":[
-{"type":"Feature","properties":{"kind":"object","id":"<img src=x onerror=window.injected=1>crate","tag":"box",
- "z":[[0,0.5]]},
- "geometry":{"type":"Polygon","coordinates":[[[24,30],[27,30],[27,32],[24,32],[24,30]]]}}]})");
-  const RunResult imported = run("fleetmap", "objects import " + kMap + " " + scene + " --replace --add-tags");
-  ASSERT_EQ(imported.exit_code, 0) << imported.err;
 
   web_ = std::make_unique<WebProcess>();
   open_browser();
@@ -336,6 +352,7 @@ TEST_F(ConsoleBrowser, InspectorSeesNoWriteControlsAndAForcedWriteIsRefused) {
   ASSERT_TRUE(page_->wait_for("document.querySelector(" + quoted(row) + ")", 10s));
   EXPECT_FALSE(visible("#mode-goal"));
   EXPECT_FALSE(visible("#mode-pose"));
+  EXPECT_FALSE(visible("#goal-named"));
   EXPECT_EQ(page_->evaluate("document.querySelectorAll('#tasks button.abort').length"), 0);
   // The session cookie is HttpOnly: the page's scripts cannot read it (SPEC 4).
   EXPECT_EQ(page_->evaluate("document.cookie.indexOf('fleetmap_session')"), -1);

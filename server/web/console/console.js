@@ -265,6 +265,7 @@ function updateControls() {
   $('selected').textContent = name ? name + (r && r.map !== app.mapName ? ' (on ' + r.map + ')' : '') : 'No robot selected';
   $('mode-goal').disabled = !here || !isOperator();
   $('mode-pose').disabled = !here || !isOperator();
+  $('goal-named-submit').disabled = !(r && isOperator());
   if (!here && app.mode) setMode(null);
 }
 
@@ -277,14 +278,7 @@ async function onMapClick(latlng) {
   setMode(null);  // one click, one request
   const x = Math.round(p.x * 1000) / 1000, y = Math.round(p.y * 1000) / 1000;
   if (mode === 'goal') {
-    try {
-      const res = await fleetApi.post(apiPath`/api/robots/${name}/goal`, { x: x, y: y });
-      showMessage('Task #' + res.task + ': ' + name + ' to (' + fmt(res.goal[0]) + ', ' + fmt(res.goal[1]) + ')' +
-        (res.path_length !== undefined && res.path_length !== null ? ', path ' + fmt(res.path_length, 1) + ' m' : ''));
-      await refreshTasks();
-    } catch (e) {
-      showFailure('Goal', e);
-    }
+    await sendGoal(name, { x: x, y: y });
   } else {
     const deg = $('pose-theta').value;
     const body = { x: x, y: y };
@@ -296,6 +290,25 @@ async function onMapClick(latlng) {
       showFailure('Pose', e);
     }
   }
+}
+
+// body: {"x","y"}, {"tag"} or {"node"} (POST /api/robots/{name}/goal).
+async function sendGoal(name, body) {
+  try {
+    const res = await fleetApi.post(apiPath`/api/robots/${name}/goal`, body);
+    showMessage('Task #' + res.task + ': ' + name + ' to (' + fmt(res.goal[0]) + ', ' + fmt(res.goal[1]) + ')' +
+      (res.path_length !== undefined && res.path_length !== null ? ', path ' + fmt(res.path_length, 1) + ' m' : ''));
+    await refreshTasks();
+  } catch (e) {
+    showFailure('Goal', e);
+  }
+}
+
+async function onNamedGoal(ev) {
+  ev.preventDefault();
+  const name = fleet.selected, target = $('goal-name').value.trim();
+  if (!name || !target) return;
+  await sendGoal(name, $('goal-kind').value === 'node' ? { node: target } : { tag: target });
 }
 
 // ---- tasks ----------------------------------------------------------------------------
@@ -390,6 +403,7 @@ function connectFeed() {
 
 $('login-form').addEventListener('submit', onLoginSubmit);
 $('logout').addEventListener('click', logout);
+$('goal-named').addEventListener('submit', onNamedGoal);
 $('map-select').addEventListener('change', (e) => showMap(e.target.value, false));
 $('crs-wgs84').addEventListener('change', (e) => showMap(app.mapName, e.target.checked));
 $('mode-goal').addEventListener('click', () => setMode(app.mode === 'goal' ? null : 'goal'));
