@@ -37,15 +37,19 @@ std::map<std::string, OutputFrame> wgs84_frames(mysqlpp::Connection& c) {
 }
 
 nlohmann::json robot_state_json(const RobotStatus& s, const OutputFrame* wgs84) {
-  nlohmann::json lonlat;
+  std::optional<LonLat> lonlat;
   if (wgs84 && s.x && s.y) {
     try {
       const Point p = wgs84->apply({*s.x, *s.y});
-      lonlat = {p.x, p.y};
+      lonlat = LonLat{p.x, p.y};
     } catch (const std::invalid_argument&) {
       // outside the projection's domain: no lonlat
     }
   }
+  return robot_state_json(s, lonlat);
+}
+
+nlohmann::json robot_state_json(const RobotStatus& s, const std::optional<LonLat>& lonlat) {
   nlohmann::json task;
   if (s.task_id)
     task = {{"id", *s.task_id},
@@ -59,7 +63,7 @@ nlohmann::json robot_state_json(const RobotStatus& s, const OutputFrame* wgs84) 
           {"y", number_or_null(s.y)},
           {"theta", number_or_null(s.theta)},
           {"v", number_or_null(s.v)},
-          {"lonlat", lonlat},
+          {"lonlat", lonlat ? nlohmann::json::array({lonlat->lon, lonlat->lat}) : nlohmann::json()},
           {"task", task},
           {"goal", goal},
           {"last_seen", text_or_null(iso8601_utc(s.last_seen))}};

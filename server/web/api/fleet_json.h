@@ -17,6 +17,7 @@
 #include <mysql++/mysql++.h>
 #include <nlohmann/json.hpp>
 
+#include "common/gis/geo_transform.h"
 #include "common/io/output_frame.h"
 #include "protocol/fleet_store.h"
 
@@ -26,8 +27,10 @@ namespace fleetmap::web {
 // cannot use are left out: their robots get "lonlat": null).
 std::map<std::string, OutputFrame> wgs84_frames(mysqlpp::Connection& c);
 
-// s read under UtcSession (its last_seen in UTC).
+// s read under UtcSession (its last_seen in UTC); lonlat from the map's WGS 84 frame
+// (nullptr: not georeferenced), or given (the feed keeps one GeoTransform per map).
 nlohmann::json robot_state_json(const RobotStatus& s, const OutputFrame* wgs84);
+nlohmann::json robot_state_json(const RobotStatus& s, const std::optional<LonLat>& lonlat);
 nlohmann::json task_json(const TaskInfo& t);  // t read under UtcSession
 
 // Every robot's state (an array, by name), read on c with times in UTC.

@@ -8,7 +8,7 @@
 #include "protocol/fleet_store.h"
 #include "protocol/map_store.h"
 #include "protocol/task_changes.h"
-#include "server/web/http/feed_json.h"
+#include "server/web/api/fleet_json.h"
 
 namespace fleetmap::web {
 
@@ -96,7 +96,7 @@ void FleetFeed::poll(mysqlpp::Connection& c) {
   for (const RobotStatus& s : FleetStore(c).status()) {
     std::optional<LonLat> ll;
     if (s.x && s.y) ll = lonlat(s.map, *s.x, *s.y);
-    robots.push_back(feed_robot_json(s, ll));
+    robots.push_back(robot_state_json(s, ll));
   }
   update.robots = diff_.changed(robots);
   // Two seconds back, for late commits; what was pushed with the same updated_at is not
@@ -104,7 +104,7 @@ void FleetFeed::poll(mysqlpp::Connection& c) {
   std::map<unsigned long long, std::string> seen;
   for (const TaskInfo& t : tasks_updated_since(c, tasks_since_, 2'000'000)) {
     auto old = tasks_seen_.find(t.id);
-    if (old == tasks_seen_.end() || old->second != t.updated_at) update.tasks.push_back(feed_task_json(t));
+    if (old == tasks_seen_.end() || old->second != t.updated_at) update.tasks.push_back(task_json(t));
     seen[t.id] = t.updated_at;
     if (t.updated_at > tasks_since_) tasks_since_ = t.updated_at;
   }

@@ -53,10 +53,12 @@ TEST(ServerConfig, TheSampleFilesSettingsUncommentedParseToTheDefaults) {
   static const std::regex kSetting(R"(^# ([a-z_]+ = \S+\s+#.*)$)");
   std::string line;
   size_t uncommented = 0;
+  std::string section;  // only [server]'s: other programs' sections have settings of their own
   while (std::getline(in, line)) {
     if (line.rfind("password_file", 0) == 0) continue;  // a file this machine may not have
+    if (line.rfind("[", 0) == 0) section = line;
     std::smatch m;
-    if (std::regex_match(line, m, kSetting)) {
+    if (section == "[server]" && std::regex_match(line, m, kSetting)) {
       text << m[1] << "\n";
       ++uncommented;
     } else {
