@@ -176,15 +176,18 @@ void FleetStore::set_initial_pose(const std::string& robot, double x, double y, 
 
 std::vector<TaskInfo> FleetStore::tasks(const std::optional<std::string>& robot, size_t limit) {
   mysqlpp::Query q = c_.query();
-  q << "SELECT id, robot, goal_x, goal_y, state, reason, created_at, updated_at FROM v_tasks";
+  q << "SELECT id, robot, goal_x, goal_y, state, COALESCE(reason, ''), created_at, updated_at FROM v_tasks";
   if (robot) q << " WHERE robot = " << mysqlpp::quote << *robot;
   q << " ORDER BY id DESC LIMIT " << limit;
   std::vector<TaskInfo> out;
-  for (const mysqlpp::Row& r : q.store())
-    out.push_back({sql::to_uint(r[0]), sql::to_string(r[1]), task_state_from_string(sql::to_string(r[4])),
-                   sql::to_string(r[5]), sql::to_string(r[6]), sql::to_string(r[7]), sql::to_double(r[2]),
-                   sql::to_double(r[3])});
+  for (const mysqlpp::Row& r : q.store()) out.push_back(task_from_row(r));
   return out;
+}
+
+TaskInfo task_from_row(const mysqlpp::Row& r) {
+  return {sql::to_uint(r[0]), sql::to_string(r[1]), task_state_from_string(sql::to_string(r[4])),
+          sql::to_string(r[5]), sql::to_string(r[6]), sql::to_string(r[7]), sql::to_double(r[2]),
+          sql::to_double(r[3])};
 }
 
 namespace {

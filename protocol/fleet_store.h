@@ -70,6 +70,10 @@ struct TrajectoryPoint {
   std::string t_utc;
 };
 
+// A task read as "SELECT id, robot, goal_x, goal_y, state, COALESCE(reason, ''),
+// created_at, updated_at FROM v_tasks": the one way a row of v_tasks becomes a TaskInfo.
+TaskInfo task_from_row(const mysqlpp::Row& r);
+
 class FleetStore {
  public:
   explicit FleetStore(mysqlpp::Connection& c) : c_(c) {}

@@ -16,10 +16,7 @@ std::vector<TaskInfo> tasks_updated_since(mysqlpp::Connection& c, const std::str
     << " WHERE updated_at > TIMESTAMP(" << mysqlpp::quote << since << ") - INTERVAL " << lookback_us << " MICROSECOND"
     << " ORDER BY updated_at, id LIMIT " << limit;
   std::vector<TaskInfo> out;
-  for (const mysqlpp::Row& r : q.store())
-    out.push_back({sql::to_uint(r[0]), sql::to_string(r[1]), task_state_from_string(sql::to_string(r[4])),
-                   sql::to_string(r[5]), sql::to_string(r[6]), sql::to_string(r[7]), sql::to_double(r[2]),
-                   sql::to_double(r[3])});
+  for (const mysqlpp::Row& r : q.store()) out.push_back(task_from_row(r));
   return out;
 }
 
