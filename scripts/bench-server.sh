@@ -92,26 +92,10 @@ fi
 NEED=$(echo $SCALING $ROBOTS | tr ' ' '\n' | sort -n | tail -1)
 has_phase scaling || NEED=$ROBOTS
 PWDIR="$FLEETMAP_HOME/robots"
-mkdir -p "$PWDIR"; chmod 700 "$PWDIR"
-declare -A EXISTS=()
-for name in $("$BIN/fleetmap" robot list | awk 'NR > 1 { print $2 }'); do EXISTS[$name]=1; done
-T0=$(date +%s); MISSING=()
-for i in $(seq 1 "$NEED"); do
-  printf -v name 'lg%04d' "$i"
-  if [ -n "${EXISTS[$name]:-}" ]; then
-    [ -s "$PWDIR/$name.pw" ] && continue
-    # An account whose password file is gone is made again with a new password.
-    "$BIN/fleetmap" robot remove "$name" >/dev/null
-  fi
-  (umask 077; head -c 18 /dev/urandom | base64 | tr -d '/+=' > "$PWDIR/$name.pw")
-  MISSING+=("$name")
-done
-if [ ${#MISSING[@]} -gt 0 ]; then
-  echo "bench-server: creating ${#MISSING[@]} robot accounts with fleetmap robot add (once; reused later) ..."
-  printf '%s\n' "${MISSING[@]}" | xargs -P 4 -I{} "$BIN/fleetmap" robot add {} --map UT_Campus \
-    --password-file "$PWDIR/{}.pw" >/dev/null
-fi
-ADDED=${#MISSING[@]}
+T0=$(date +%s)
+source scripts/robot-accounts.sh
+ensure_robot_accounts "$BIN/fleetmap" lg "$NEED" UT_Campus "$PWDIR" bench-server
+ADDED=$ROBOT_ACCOUNTS_ADDED
 echo "bench-server: $NEED robot accounts ready ($ADDED added in $(( $(date +%s) - T0 )) s)"
 
 RES="$FLEETMAP_HOME/results-$(date +%Y%m%d-%H%M%S).jsonl"

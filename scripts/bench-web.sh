@@ -46,26 +46,10 @@ bash scripts/db.sh sql -e "SET GLOBAL max_connections = $(( ROBOTS + 100 ))"
 "$BIN/fleetmap" map list | grep -qw webbench ||
   "$BIN/fleetmap" map import maps/example-campus.map --name webbench >/dev/null
 
-# Robot accounts wp0001..: created once with `fleetmap robot add`, reused later.
+# Robot accounts wp0001..: created once, reused later (scripts/robot-accounts.sh).
 PWDIR="$FLEETMAP_HOME/robots"
-mkdir -p "$PWDIR"; chmod 700 "$PWDIR"
-declare -A EXISTS=()
-for name in $("$BIN/fleetmap" robot list | awk 'NR > 1 { print $2 }'); do EXISTS[$name]=1; done
-MISSING=()
-for i in $(seq 1 "$ROBOTS"); do
-  printf -v name 'wp%04d' "$i"
-  if [ -n "${EXISTS[$name]:-}" ]; then
-    [ -s "$PWDIR/$name.pw" ] && continue
-    "$BIN/fleetmap" robot remove "$name" >/dev/null
-  fi
-  (umask 077; head -c 18 /dev/urandom | base64 | tr -d '/+=' > "$PWDIR/$name.pw")
-  MISSING+=("$name")
-done
-if [ ${#MISSING[@]} -gt 0 ]; then
-  echo "bench-web: creating ${#MISSING[@]} robot accounts (once; reused later) ..."
-  printf '%s\n' "${MISSING[@]}" | xargs -P 4 -I{} "$BIN/fleetmap" robot add {} --map webbench \
-    --password-file "$PWDIR/{}.pw" >/dev/null
-fi
+source scripts/robot-accounts.sh
+ensure_robot_accounts "$BIN/fleetmap" wp "$ROBOTS" webbench "$PWDIR" bench-web
 bash scripts/db.sh sql -e "DELETE FROM rr; DELETE FROM sa WHERE sentinel = 0"
 
 "$BIN/fleetmap-server" --log-level warn >>"$FLEETMAP_HOME/server.log" 2>&1 &
