@@ -10,6 +10,9 @@
 #   FLEETMAP_HOME   instance folder (default: <checkout>/.fleetmap)
 #   FLEETMAP_PORT   loopback TCP port (default: 33306)
 #   FLEETMAP_DB     database name (default: fleetmap)
+#   FLEETMAP_MYSQLD_ARGS  extra mariadbd options (scripts/cluster.sh: the wsrep settings)
+#   FLEETMAP_JOINER       1: a Galera node that receives its data from the cluster
+#                         (scripts/cluster.sh): no mariadb-install-db, no sql/ loading
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
@@ -91,11 +94,16 @@ SQL
 start() {
   mkdir -p "$HOME_DIR"
   if running; then
-    load_sql
+    [ "${FLEETMAP_JOINER:-0}" = 1 ] || load_sql
     echo "db.sh: already running (socket $SOCK, port $PORT)"
     return
   fi
-  if [ ! -d "$DATA/mysql" ]; then
+  if [ "${FLEETMAP_JOINER:-0}" = 1 ]; then
+    mkdir -p "$DATA"
+    # rsync's state transfer daemon, started by root, writes as nobody, and must be able
+    # to replace what mariadbd (root) wrote before a crash.
+    [ "$(id -u)" = 0 ] && chown -R nobody:nogroup "$DATA"
+  elif [ ! -d "$DATA/mysql" ]; then
     echo "db.sh: creating data directory $DATA"
     rm -rf "$DATA"
     # --skip-test-db: no anonymous accounts (SPEC 9).
@@ -112,7 +120,8 @@ start() {
     --pid-file="$PIDF" --log-error="$LOG" \
     --character-set-server=utf8mb4 --collation-server=utf8mb4_unicode_ci \
     --max-connections=1100 \
-    --max-allowed-packet=64M --innodb-buffer-pool-size=512M --innodb-log-file-size=256M >/dev/null 2>&1 &
+    --max-allowed-packet=64M --innodb-buffer-pool-size=512M --innodb-log-file-size=256M \
+    ${FLEETMAP_MYSQLD_ARGS:-} >/dev/null 2>&1 &
   local pid=$! i
   for i in $(seq 1 240); do
     running && break
@@ -123,7 +132,7 @@ start() {
     sleep 0.25
   done
   running || die "server did not answer within 60 s, see $LOG"
-  load_sql
+  [ "${FLEETMAP_JOINER:-0}" = 1 ] || load_sql
   echo "db.sh: running (socket $SOCK, port $PORT, database $DB, config $CONF)"
 }
 
@@ -151,6 +160,6 @@ case "${1:-}" in
   status) status ;;
   sql) shift; running || die "not running; use: $0 start"; admin "$DB" "$@" ;;
   conf) echo "$CONF" ;;
-  -h|--help|help|"") sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//' ;;
+  -h|--help|help|"") sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//' ;;
   *) die "unknown command '$1' (start|stop|status|sql|conf)" ;;
 esac

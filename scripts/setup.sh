@@ -15,6 +15,7 @@ PACKAGES=(
   clang libclang-rt-14-dev llvm
   libgdal-dev gdal-bin libproj-dev proj-bin
   libjs-leaflet chromium curl libssl-dev openssl
+  galera-4 rsync
 )
 
 missing=()
