@@ -71,7 +71,16 @@ void bench_map(const std::string& path, const TrialSettings& base, const std::ve
   const Map map = load_map_file(path);
   std::shared_ptr<const RayCaster> world = std::make_shared<GridRayCaster>(map, base.filter.laser);
   report_map_header(stdout, path, map, base);
-  for (const std::string& c : configs) report_preset(stdout, map, world, base, c, !skip_global, !skip_tracking);
+  for (const std::string& c : configs) {
+    report_preset(stdout, map, world, base, c, !skip_global, !skip_tracking);
+    if (base.kidnaps > 0 || base.false_alarm_drive > 0) {
+      TrialSettings k = base;
+      k.filter = preset(c).value_or(base.filter);
+      k.filter.particles = base.filter.particles;
+      k.filter.threads = base.filter.threads;
+      report_kidnap(stdout, map, world, k);
+    }
+  }
   if (skip_rate) return;
   // The seed's method is timed on 300 particles and scaled: it is that much slower.
   const size_t np = base.filter.particles, seed_np = 300;
@@ -108,6 +117,12 @@ int main(int argc, char** argv) {
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_option("--threads", s.filter.threads, "filter threads")->capture_default_str();
   app.add_option("--config", config, "seed, robust, search (comma-separated) or all")->capture_default_str();
+  app.add_option("--kidnaps", s.kidnaps, "kidnapping trials per map and config (0: none)")->capture_default_str();
+  app.add_option("--kidnap-after", s.kidnap_after, "metres of tracking before each kidnap")->capture_default_str();
+  double false_alarm_hours = 0;
+  app.add_option("--false-alarm-hours", false_alarm_hours,
+                 "hours of driving without a kidnap, for the lost detector's false alarms (a scan every 0.2 s, 0.25 m)")
+      ->capture_default_str();
   bool per_trial = false;
   app.add_flag("--per-trial", per_trial, "a line per global trial: start pose, outcome, final error");
   app.add_flag("--skip-global", skip_global);
@@ -128,6 +143,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   s.look_around_turn = deg2rad(turn_deg);
+  s.false_alarm_drive = false_alarm_hours * 3600 / s.scan_period_s * DriveOptions{}.step;
   if (per_trial) s.per_trial = stdout;
   if (maps.empty()) maps = {real_map_path("GDC1.vectormap.txt"), real_map_path("UT_Campus.vectormap.txt")};
   for (const std::string& m : maps) bench_map(m, s, configs, skip_global, skip_tracking, skip_rate);

@@ -139,6 +139,160 @@ TrackResult run_tracking_trial(const Map& map, std::shared_ptr<const RayCaster> 
   return res;
 }
 
+namespace {
+
+std::shared_ptr<const GlobalSearch> make_search(const Map& map, const ParticleFilterOptions& f) {
+  if (!f.global_search) return nullptr;
+  GlobalSearchOptions so = f.search;
+  so.field.margin = f.laser.rmax;
+  so.field.laser_height = f.laser.laser_height;
+  so.threads = f.threads;
+  return std::make_shared<GlobalSearch>(map, so);
+}
+
+// A tracking filter (KLD sampling, as run_tracking_trial) with its lost detector, driven
+// by one WanderDriver at a time; step() returns whether the detector says lost.
+struct TrackedRobot {
+  TrackedRobot(const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s, const Pose& start,
+               uint64_t seed)
+      : s_(s), world_(world), beams_(evenly_spread_angles(s.laser.beams, s.laser.fov)), rng_(seed),
+        laser_(world, s.laser, rng_()), driver_(std::make_unique<WanderDriver>(world, start, DriveOptions{}, rng_())),
+        detector_(s.lost) {
+    ParticleFilterOptions fo = s.filter;
+    fo.adaptive = true;
+    fo.kld.max_particles = fo.particles;
+    fo.seed = seed * 7;
+    filter_ = std::make_unique<ParticleFilter>(map, world, fo);
+    filter_->init_pose(start, 0.1, deg2rad(2.0));
+  }
+  // One scan; the metres driven by the step.
+  double step() {
+    const DriveStep st = driver_->step();
+    truth_ = st.truth;
+    filter_->predict(st.odometry);
+    const std::vector<double> scan = laser_.scan(st.truth);
+    filter_->update(scan, compass_reading(st.truth, s_.compass_sd, filter_->options().compass_half_width, rng_));
+    detector_.update(scan_agreement(*world_, filter_->estimate().pose, beams_, scan, s_.lost.tolerance));
+    return st.driven;
+  }
+  // Moved without odometry: from here on the driver starts at `to`.
+  void kidnap(const Pose& to) { driver_ = std::make_unique<WanderDriver>(world_, to, DriveOptions{}, rng_()); truth_ = to; }
+
+  const TrialSettings& s_;
+  std::shared_ptr<const RayCaster> world_;
+  std::vector<double> beams_;
+  std::mt19937_64 rng_;
+  LaserSimulator laser_;
+  std::unique_ptr<WanderDriver> driver_;
+  std::unique_ptr<ParticleFilter> filter_;
+  LostDetector detector_;
+  Pose truth_;
+};
+
+}  // namespace
+
+KidnapResult run_kidnap_trials(const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s) {
+  KidnapResult res;
+  const FreeSpace free_space(map);
+  const std::vector<double> beams = evenly_spread_angles(s.laser.beams, s.laser.fov);
+  const std::shared_ptr<const GlobalSearch> search = make_search(map, s.filter);
+  for (int t = 0; t < s.kidnaps; ++t) {
+    std::mt19937_64 rng(s.seed * 104729 + t);
+    const Pose start = pick_start_pose(free_space, *world, beams, s.min_hit_fraction, 0.5, rng);
+    TrackedRobot robot(map, world, s, start, rng());
+    double driven = 0;
+    while (driven < s.kidnap_after) {
+      driven += robot.step();
+      if (robot.detector_.lost()) {  // nothing happened: a false alarm
+        ++res.false_alarms;
+        robot.detector_.reset();
+      }
+    }
+    res.driven_without_kidnap += driven;
+    ++res.trials;
+    robot.kidnap(pick_start_pose(free_space, *world, beams, s.min_hit_fraction, 0.5, rng));
+    int since = 0;
+    const int give_up = static_cast<int>(std::ceil(10.0 / s.scan_period_s));  // 10 s
+    while (!robot.detector_.lost() && since < give_up) {
+      robot.step();
+      ++since;
+    }
+    if (!robot.detector_.lost()) continue;
+    ++res.detected;
+    res.detect_updates.push_back(since);
+    if (s.recover_updates <= 0) continue;
+    // Recovery as at boot (SimRobot::localize): a global filter, a look around.
+    const auto t0 = Clock::now();
+    ParticleFilterOptions fo = s.filter;
+    fo.seed = s.seed * 7919 + t;
+    ParticleFilter pf(map, world, fo);
+    if (search) pf.set_global_search(search);
+    DriveOptions look;
+    look.step = s.global_step;
+    look.look_around_steps = s.look_around;
+    look.look_around_turn = s.look_around_turn;
+    WanderDriver driver(world, robot.truth_, look, rng());
+    LaserSimulator laser(world, s.laser, rng());
+    Pose truth = robot.truth_;
+    pf.init_global(compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
+    for (int u = 1; u <= s.recover_updates; ++u) {
+      if (u > 1) {
+        const DriveStep st = driver.step();
+        truth = st.truth;
+        pf.predict(st.odometry);
+      }
+      pf.update(laser.scan(truth), compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
+      const PoseEstimate e = pf.estimate();
+      if (!e.converged) continue;
+      const bool within = distance(e.pose, truth) < 0.3 && std::fabs(angle_diff(e.pose.theta, truth.theta)) < deg2rad(3.0);
+      if (within) {
+        ++res.recovered;
+        res.recover_updates.push_back(u);
+      } else {
+        ++res.wrong;
+      }
+      break;
+    }
+    res.recover_compute_s += seconds_since(t0);
+  }
+  // Normal driving, no kidnap: every "lost" is a false alarm.
+  if (s.false_alarm_drive > 0) {
+    std::mt19937_64 rng(s.seed * 15485863);
+    const Pose start = pick_start_pose(free_space, *world, beams, s.min_hit_fraction, 0.5, rng);
+    TrackedRobot robot(map, world, s, start, rng());
+    double driven = 0;
+    while (driven < s.false_alarm_drive) {
+      driven += robot.step();
+      if (robot.detector_.lost()) {
+        ++res.false_alarms;
+        robot.detector_.reset();
+      }
+    }
+    res.driven_without_kidnap += driven;
+  }
+  return res;
+}
+
+void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s) {
+  const auto t0 = Clock::now();
+  const KidnapResult k = run_kidnap_trials(map, world, s);
+  const double step = DriveOptions{}.step;
+  const double hours = k.driven_without_kidnap / step * s.scan_period_s / 3600;
+  std::fprintf(out,
+               "kidnapping, %d trials (%d people/scan; after %.0f m of tracking, moved to a random place): detected %d "
+               "(%.1f %%) in median %.1f s, p95 %.1f s, max %.1f s (goal <= 3 s; a scan every %.2f s); recovered %d "
+               "(%.1f %% of the detected) in median %.1f s, p95 %.1f s of driving, %.2f s of computation each; "
+               "wrong %d; false alarms %d in %.2f h of driving (%.0f m) (goal 0 per hour); %.0f s\n",
+               k.trials, s.laser.people, s.kidnap_after, k.detected, 100.0 * k.detected / std::max(1, k.trials),
+               percentile(k.detect_updates, 0.5) * s.scan_period_s, percentile(k.detect_updates, 0.95) * s.scan_period_s,
+               k.detect_updates.empty() ? NAN : *std::max_element(k.detect_updates.begin(), k.detect_updates.end()) * s.scan_period_s,
+               s.scan_period_s, k.recovered, 100.0 * k.recovered / std::max(1, k.detected),
+               percentile(k.recover_updates, 0.5) * s.scan_period_s, percentile(k.recover_updates, 0.95) * s.scan_period_s,
+               k.recover_compute_s / std::max(1, k.detected), k.wrong, k.false_alarms, hours, k.driven_without_kidnap,
+               seconds_since(t0));
+  std::fflush(out);
+}
+
 const std::vector<std::string>& preset_names() {
   static const std::vector<std::string> names{"seed", "robust", "search"};
   return names;

@@ -7,7 +7,12 @@
 //     last (the robot looking around, then wandering global_step metres between scans); start poses in free
 //     space with at least min_hit_fraction of the beams hitting a wall;
 //  2. tracking: RMS and maximum error along a `drive`-metre wander (a scan every 0.25 m,
-//     odometry noise), beside dead reckoning from the same odometry (the baseline).
+//     odometry noise), beside dead reckoning from the same odometry (the baseline);
+//  3. kidnapping (client/localization/lost_detector.h): a tracked robot moved to a random
+//     place without odometry; the updates until the detector says lost, then until a
+//     new global localization (a look around, as at boot) is within 0.3 m and 3 degrees;
+//     and the false alarms of the detector over `false_alarm_drive` metres of normal
+//     driving.
 //
 // Everything is seeded (TrialSettings::seed): the same settings give the same trials.
 #include <cstdint>
@@ -18,6 +23,7 @@
 #include <vector>
 
 #include "client/sim/laser_simulator.h"
+#include "client/localization/lost_detector.h"
 #include "client/localization/particle_filter.h"
 #include "common/map/map.h"
 #include "common/raycast/ray_caster.h"
@@ -39,6 +45,14 @@ struct TrialSettings {
   double compass_sd = deg2rad(1.0);  // the compass's own error (clamped to +-3 degrees)
   uint64_t seed = 1;
   std::FILE* per_trial = nullptr;  // a line per global trial (start, outcome) when set
+  // Kidnapping trials: this many, each after kidnap_after metres of tracking; updates
+  // come every scan_period_s (SimRobot's rate while driving) for the times reported.
+  int kidnaps = 0;
+  double kidnap_after = 20;
+  double false_alarm_drive = 0;  // metres of driving without a kidnap (0: none)
+  double scan_period_s = 0.2;
+  int recover_updates = 30;      // a recovery not within bounds by then failed; 0: no recovery
+  LostDetectorOptions lost;
 };
 
 struct GlobalResult {
@@ -55,9 +69,21 @@ struct TrackResult {
   int updates = 0;
 };
 
+struct KidnapResult {
+  int trials = 0, detected = 0, recovered = 0, wrong = 0;  // wrong: converged elsewhere
+  std::vector<int> detect_updates;   // per detected kidnap: updates from the kidnap to "lost"
+  std::vector<int> recover_updates;  // per recovery: updates from "lost" to within bounds
+  double recover_compute_s = 0;      // computation of the recoveries, all of them
+  int false_alarms = 0;              // "lost" before a kidnap, or during the drive without one
+  double driven_without_kidnap = 0;  // metres of driving in which a "lost" is a false alarm
+};
+
 GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s);
 TrackResult run_tracking_trial(const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s,
                                bool adaptive);
+
+KidnapResult run_kidnap_trials(const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s);
+void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s);
 
 // The presets by name: "seed" (ParticleFilterOptions::seed_model), "robust", "search"
 // (robust_search, the robot's default); nullopt for another name.

@@ -1,0 +1,43 @@
+#include "client/localization/lost_detector.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace fleetmap::localization {
+
+double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vector<double>& beams,
+                      const std::vector<double>& ranges, double tolerance) {
+  if (ranges.size() != beams.size())
+    throw std::invalid_argument("scan_agreement: expected one range per beam (" + std::to_string(beams.size()) +
+                                "), got " + std::to_string(ranges.size()));
+  if (beams.empty()) return 0;
+  std::vector<double> cast(beams.size());
+  caster.cast_scan(pose.point(), pose.theta, beams, cast.data());
+  size_t agree = 0;
+  for (size_t j = 0; j < beams.size(); ++j) agree += std::abs(ranges[j] - cast[j]) <= tolerance;
+  return static_cast<double>(agree) / static_cast<double>(beams.size());
+}
+
+bool LostDetector::update(double agreement) {
+  if (updates_ == 0) {
+    fast_ = slow_ = agreement;
+  } else {
+    fast_ += options_.fast_alpha * (agreement - fast_);
+    // The slow average learns the place's usual fit only while the robot is not lost,
+    // so that a long loss does not become the new normal.
+    if (!lost_) slow_ += options_.slow_alpha * (agreement - slow_);
+  }
+  ++updates_;
+  const bool low = fast_ < options_.ratio * slow_ && fast_ < options_.floor;
+  below_ = low ? below_ + 1 : 0;
+  if (updates_ > options_.warmup && below_ >= options_.hold) lost_ = true;
+  return lost_;
+}
+
+void LostDetector::reset() {
+  fast_ = slow_ = 0;
+  updates_ = below_ = 0;
+  lost_ = false;
+}
+
+}  // namespace fleetmap::localization

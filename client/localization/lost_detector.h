@@ -1,0 +1,61 @@
+#pragma once
+// Is the filter still where the robot is? Tracking follows whatever pose the cloud holds;
+// a robot moved without odometry (kidnapped: lifted, pushed, a wheel slipping on a ramp)
+// keeps a confident cloud at the old place, and the scans stop fitting it. The detector
+// watches how well each scan fits the estimate, like AMCL's slow and fast averages of
+// the weights (Thrun et al. 2005, Augmented MCL), but on a figure that does not depend
+// on the sensor model's scale: the scan's agreement, the share of beams whose measured
+// range is within `tolerance` of the range cast from the estimate. People and clutter
+// shorten some beams of every scan; the slow average learns that level, so only a drop
+// well below it, lasting `hold` updates, says lost.
+//
+//   LostDetector d;
+//   d.update(scan_agreement(caster, estimate.pose, beams, ranges, 0.5));
+//   if (d.lost()) { report_lost(); filter.init_global(compass); d.reset(); }
+#include <vector>
+
+#include "client/localization/pose.h"
+#include "common/raycast/ray_caster.h"
+
+namespace fleetmap::localization {
+
+struct LostDetectorOptions {
+  double tolerance = 0.5;  // metres: a beam agrees when |measured - cast| is within this
+  double fast_alpha = 0.3;   // the fast average: about the last 3 scans
+  double slow_alpha = 0.02;  // the slow one: about the last 50 (the place's usual fit)
+  // Lost when the fast average stays below ratio x the slow one (and below floor) for
+  // hold consecutive updates. Both bounds: the ratio alone would call a place that is
+  // merely harder (a hall full of people) lost, the floor alone a corridor with glass.
+  double ratio = 0.7;
+  double floor = 0.6;
+  int hold = 3;
+  int warmup = 5;  // updates after a reset before the slow average is trusted
+};
+
+// The share of the beams (relative angles `beams`, readings `ranges`) that agree with
+// rays cast from `pose` within tolerance metres, in [0, 1].
+double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vector<double>& beams,
+                      const std::vector<double>& ranges, double tolerance);
+
+class LostDetector {
+ public:
+  explicit LostDetector(LostDetectorOptions options = {}) : options_(options) {}
+
+  // One scan's agreement; returns lost().
+  bool update(double agreement);
+  bool lost() const { return lost_; }
+  // After a new initialisation (global or the operator's pose): forget the averages.
+  void reset();
+
+  double fast() const { return fast_; }
+  double slow() const { return slow_; }
+  const LostDetectorOptions& options() const { return options_; }
+
+ private:
+  LostDetectorOptions options_;
+  double fast_ = 0, slow_ = 0;
+  int updates_ = 0, below_ = 0;
+  bool lost_ = false;
+};
+
+}  // namespace fleetmap::localization

@@ -1,0 +1,94 @@
+// The lost detector (client/localization/lost_detector.h): scan agreement on a known room,
+// the averages' verdicts, and kidnappings on the room detected and not confused with
+// people in the scans.
+#include "client/localization/lost_detector.h"
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "client/sim/laser_simulator.h"
+#include "client/sim/localization_trials.h"
+#include "common/raycast/grid_ray_caster.h"
+#include "common/raycast/sweep_ray_caster.h"
+#include "tests/client/test_maps.h"
+
+namespace fleetmap::localization {
+namespace {
+
+TEST(ScanAgreement, CountsTheBeamsWithinTheTolerance) {
+  const Map room = test::room_map();
+  const GridRayCaster caster(room, {0.3, 15.0});
+  const std::vector<double> beams = evenly_spread_angles(131, kPi);
+  const Pose at{10, 3, 0};
+  std::vector<double> ranges(beams.size());
+  caster.cast_scan(at.point(), at.theta, beams, ranges.data());
+  EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, ranges, 0.5), 1.0);
+  // Ten beams shortened by 2 m (people in front of the wall) disagree, the rest agree.
+  for (size_t j = 0; j < 10; ++j) ranges[j * 13] -= 2.0;
+  EXPECT_NEAR(scan_agreement(caster, at, beams, ranges, 0.5), 121.0 / 131.0, 1e-12);
+  // The same scan seen from 3 m away, turned around, fits far worse.
+  EXPECT_LT(scan_agreement(caster, {17, 7, 3.0}, beams, ranges, 0.5), 0.5);
+  EXPECT_THROW(scan_agreement(caster, at, beams, std::vector<double>(3, 1.0), 0.5), std::invalid_argument);
+}
+
+TEST(LostDetector, StaysFoundOnAGoodOrMerelyHarderPlace) {
+  LostDetector d;
+  for (int i = 0; i < 100; ++i) EXPECT_FALSE(d.update(i % 5 == 0 ? 0.8 : 0.95)) << i;
+  // A crowd: the fit drops to 0.7 and stays there. Above the floor: not lost.
+  for (int i = 0; i < 100; ++i) EXPECT_FALSE(d.update(0.7)) << i;
+}
+
+TEST(LostDetector, ALastingDropIsLostAfterHoldUpdatesAndResetForgetsIt) {
+  LostDetectorOptions o;
+  LostDetector d(o);
+  for (int i = 0; i < 30; ++i) d.update(0.95);
+  // One bad scan (a door opening in front of the laser) is not enough.
+  EXPECT_FALSE(d.update(0.2));
+  for (int i = 0; i < 5; ++i) d.update(0.95);
+  EXPECT_FALSE(d.lost());
+  int n = 0;
+  while (!d.update(0.2) && n < 20) ++n;
+  EXPECT_TRUE(d.lost());
+  // The fast average needs a scan or two to fall under the bounds, then hold more.
+  EXPECT_GE(n + 1, o.hold);
+  EXPECT_LE(n + 1, o.hold + 3);
+  // Lost stays lost while the scans do not fit, and while they fit again: the filter's
+  // cloud is still wrong until it is initialised anew.
+  for (int i = 0; i < 10; ++i) EXPECT_TRUE(d.update(0.95));
+  d.reset();
+  EXPECT_FALSE(d.lost());
+  for (int i = 0; i < 20; ++i) EXPECT_FALSE(d.update(0.9));
+}
+
+TEST(LostDetector, TheSlowAverageDoesNotLearnALoss) {
+  LostDetector d;
+  for (int i = 0; i < 30; ++i) d.update(0.9);
+  for (int i = 0; i < 200; ++i) d.update(0.3);
+  EXPECT_TRUE(d.lost());
+  EXPECT_GT(d.slow(), 0.8);
+}
+
+TEST(KidnapTrials, OnTheRoomEveryKidnapIsDetectedAndNoDriveRaisesAFalseAlarm) {
+  const Map room = test::room_map();
+  std::shared_ptr<const RayCaster> world = make_fast_ray_caster(room, RayCasterOptions{0.3, 15.0});
+  TrialSettings s;
+  s.filter = *preset("robust");
+  s.filter.particles = 300;
+  s.recover_updates = 0;  // detection only: recovery is global localization, tested on its own
+  s.kidnaps = 4;
+  s.kidnap_after = 5;
+  s.false_alarm_drive = 40;
+  s.laser.people = 3;
+  s.seed = 3;
+  const KidnapResult k = run_kidnap_trials(room, world, s);
+  EXPECT_EQ(k.trials, 4);
+  EXPECT_EQ(k.detected, 4);
+  EXPECT_EQ(k.false_alarms, 0);
+  ASSERT_EQ(k.detect_updates.size(), 4u);
+  for (int u : k.detect_updates) EXPECT_LE(u * s.scan_period_s, 3.0);  // within 3 s
+  EXPECT_GE(k.driven_without_kidnap, 4 * 5 + 40);
+}
+
+}  // namespace
+}  // namespace fleetmap::localization
