@@ -119,6 +119,8 @@ int main(int argc, char** argv) {
   app.add_option("--config", config, "seed, robust, search (comma-separated) or all")->capture_default_str();
   app.add_option("--kidnaps", s.kidnaps, "kidnapping trials per map and config (0: none)")->capture_default_str();
   app.add_option("--kidnap-after", s.kidnap_after, "metres of tracking before each kidnap")->capture_default_str();
+  app.add_option("--recover-updates", s.recover_updates, "updates a recovery may take (0: detection only)")
+      ->capture_default_str();
   double false_alarm_hours = 0;
   app.add_option("--false-alarm-hours", false_alarm_hours,
                  "hours of driving without a kidnap, for the lost detector's false alarms (a scan every 0.2 s, 0.25 m)")

@@ -23,6 +23,7 @@ std::string_view to_string(RobotState s) {
     case RobotState::Moving: return "moving";
     case RobotState::Stopped: return "stopped";
     case RobotState::Lost: return "lost";
+    case RobotState::Localizing: return "localizing";
   }
   return "offline";
 }

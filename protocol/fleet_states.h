@@ -10,7 +10,9 @@
 
 namespace fleetmap {
 
-enum class RobotState { Offline, Ready, Moving, Stopped, Lost };
+// Lost: silent for too long (SPEC 5.3). Localizing: it talks, but its localization
+// reported that it does not know its pose (SendPos "status": "lost", docs/protocol.md).
+enum class RobotState { Offline, Ready, Moving, Stopped, Lost, Localizing };
 
 enum class TaskState { Assigned, Acknowledged, Active, Done, Aborted, Failed };
 
@@ -30,7 +32,7 @@ RobotState robot_state_from_string(std::string_view text);
 TaskState task_state_from_string(std::string_view text);
 
 inline constexpr RobotState kRobotStates[] = {RobotState::Offline, RobotState::Ready, RobotState::Moving,
-                                              RobotState::Stopped, RobotState::Lost};
+                                              RobotState::Stopped, RobotState::Lost, RobotState::Localizing};
 inline constexpr TaskState kTaskStates[] = {TaskState::Assigned, TaskState::Acknowledged, TaskState::Active,
                                             TaskState::Done,     TaskState::Aborted,      TaskState::Failed};
 

@@ -123,8 +123,18 @@ OpAckParams decode_op_ack(const Json& j) {
 
 SendPosParams decode_send_pos(const Json& j) {
   require_object(j);
+  bool lost = false;
+  if (const Json* st = find(j, "status")) {
+    const std::string s = st->is_string() ? st->get<std::string>() : std::string();
+    if (s != "localized" && s != "lost") bad("status", "\"localized\" or \"lost\"");
+    lost = s == "lost";
+  }
+  if (lost)  // a robot that does not know where it is need not make a pose up
+    return {optional_number(j, "x").value_or(0), optional_number(j, "y").value_or(0),
+            optional_number(j, "theta", 1e3).value_or(0), optional_number(j, "v", kMaxSpeed).value_or(0),
+            optional_number(j, "w", kMaxSpeed), true};
   return {number(j, "x"), number(j, "y"), number(j, "theta", 1e3), number(j, "v", kMaxSpeed),
-          optional_number(j, "w", kMaxSpeed)};
+          optional_number(j, "w", kMaxSpeed), false};
 }
 
 SendGpsParams decode_send_gps(const Json& j) {

@@ -46,7 +46,14 @@ std::optional<MapMode> parse_map_mode(std::string_view s);
 // Robot -> server.
 struct ReadyParams { long long magic = 0; std::optional<MapEncoding> encoding; };
 struct OpAckParams { unsigned long long answer_id = 0; };
-struct SendPosParams { double x = 0, y = 0, theta = 0, v = 0; std::optional<double> w; };
+// "status": "lost" (optional; default "localized"): the robot's localization says it
+// no longer knows where it is (client/localization/lost_detector.h). Its pose fields
+// may then be left out, and are not stored (docs/protocol.md).
+struct SendPosParams {
+  double x = 0, y = 0, theta = 0, v = 0;
+  std::optional<double> w;
+  bool lost = false;
+};
 struct SendGpsParams { double lat = 0, lon = 0; };
 struct SendImageParams { double x = 0, y = 0; std::optional<long long> object_id; std::string format; };
 struct GetMapParams {

@@ -72,7 +72,7 @@ CREATE TABLE IF NOT EXISTS robots (
   -- account name: [a-z0-9_-]{1,32}, binary no-pad so 'R1' or 'r1 ' never match 'r1' (SPEC 5.1)
   db_user     VARCHAR(80) CHARACTER SET utf8mb4 COLLATE utf8mb4_nopad_bin NOT NULL,
   map_id      INT UNSIGNED NULL,
-  state       ENUM('offline','ready','moving','stopped','lost') NOT NULL DEFAULT 'offline',
+  state       ENUM('offline','ready','moving','stopped','lost','localizing') NOT NULL DEFAULT 'offline',
   magic       BIGINT NULL,                    -- of the current session (last Ready); NULL: never registered
   session_at  TIMESTAMP(6) NULL,
   x           DOUBLE NULL,

@@ -51,3 +51,7 @@ INSERT INTO sa (robot_id, db_user, request_id, op, params, payload, created_at, 
   SELECT r.id, r.db_user, NULL, 'End', '{}', NULL, SYSDATE(6), 1 FROM robots r
   WHERE r.removed_at IS NULL
     AND NOT EXISTS (SELECT 1 FROM sa WHERE sa.db_user = r.db_user AND sa.sentinel = 1);
+
+-- 'localizing': the robot's own localization reported its pose lost (SendPos "status":
+-- "lost", docs/protocol.md); it stays until the robot reports a pose again.
+ALTER TABLE robots MODIFY state ENUM('offline','ready','moving','stopped','lost','localizing') NOT NULL DEFAULT 'offline';

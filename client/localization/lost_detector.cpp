@@ -13,9 +13,17 @@ double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vect
   if (beams.empty()) return 0;
   std::vector<double> cast(beams.size());
   caster.cast_scan(pose.point(), pose.theta, beams, cast.data());
-  size_t agree = 0;
-  for (size_t j = 0; j < beams.size(); ++j) agree += std::abs(ranges[j] - cast[j]) <= tolerance;
-  return static_cast<double>(agree) / static_cast<double>(beams.size());
+  // A beam stopped short is explained by something the map does not hold (people,
+  // clutter: seed 000 eq. 5's uniform term) and says nothing about the pose; of the
+  // others, those within the tolerance agree and those that reach past a wall do not.
+  size_t agree = 0, through = 0;
+  for (size_t j = 0; j < beams.size(); ++j) {
+    const double d = ranges[j] - cast[j];
+    if (std::abs(d) <= tolerance) ++agree;
+    else if (d > 0) ++through;
+  }
+  if (agree + through == 0) return 1.0;  // every beam blocked: nothing contradicts the pose
+  return static_cast<double>(agree) / static_cast<double>(agree + through);
 }
 
 bool LostDetector::update(double agreement) {

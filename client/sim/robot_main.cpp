@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
                "and drives to the goals operators give it."};
   std::optional<std::string> config, host, user, password_file, world;
   std::optional<unsigned> port;
-  std::vector<double> start;
+  std::vector<double> start, kidnap;
   double duration = 1e9;
   SimRobotOptions o;
   long long magic = 0;
@@ -82,6 +82,10 @@ int main(int argc, char** argv) {
   app.add_option("--world", world, "ground-truth map file (seed or AMRL); default: the map the server sends on Ready");
   app.add_option("--start", start, "true start pose X Y THETA (m, m, rad); required unless --trials")->expected(3);
   app.add_option("--duration", duration, "stop after this many seconds");
+  app.add_option("--kidnap", kidnap,
+                 "T X Y THETA: at T seconds move the true robot to (X, Y, THETA) without odometry; the lost detector "
+                 "should notice, report it (SendPos status lost) and localize again")
+      ->expected(4);
   app.add_option("--laser-height", o.laser_height, "laser mounting height hL (m)")->capture_default_str();
   app.add_option("--beams", o.laser.beams, "laser beams NL")->capture_default_str();
   app.add_option("--laser-sigma", o.laser.sigma, "laser noise sigma_L (m)")->capture_default_str();
@@ -135,6 +139,10 @@ int main(int argc, char** argv) {
     client.start_alive(std::chrono::milliseconds(static_cast<int>(session.alive_period_s * 1000)));
     Map truth = session.map;
     if (world) truth = read_map_file(*world);
+    if (kidnap.size() == 4) {
+      o.kidnap_at_s = kidnap[0];
+      o.kidnap_to = {kidnap[1], kidnap[2], kidnap[3]};
+    }
     SimRobot robot(client, truth, {start[0], start[1], start[2]}, session.map, o);
     // An operator's initial pose (GetPosIni) starts tracking from it, as with AMCL's
     // initial pose; without one, or with --global, the robot localizes globally.

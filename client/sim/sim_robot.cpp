@@ -19,6 +19,7 @@ SimRobot::SimRobot(RobotClient& client, const Map& world, Pose start, const Map&
       world_(make_fast_ray_caster(world, RayCasterOptions{o.laser_height, 15.0})),
       drive_(start, o.odometry, o.seed),
       laser_(world_, o.laser, o.seed + 1),
+      lost_(o.lost),
       pursuit_(o.pursuit),
       rng_(o.seed + 2),
       map_(first_map) {
@@ -29,6 +30,7 @@ SimRobot::SimRobot(RobotClient& client, const Map& world, Pose start, const Map&
   fo.fov = o.laser.fov;
   fo.laser = {o.laser_height, 15.0};
   fo.seed = o.seed + 3;
+  global_options_ = fo;
   filter_ = std::make_unique<loc::ParticleFilter>(first_map, fo);
   if (o.zoom) zoom_ = std::make_unique<ZoomMapClient>(client_, o.zoom_options);
 }
@@ -39,6 +41,10 @@ double SimRobot::compass() {
 }
 
 std::optional<int> SimRobot::localize(int max_updates) {
+  if (tracking_) {  // a tracking filter has few particles: global localization gets its own
+    filter_ = std::make_unique<loc::ParticleFilter>(map_, global_options_);
+    tracking_ = false;
+  }
   filter_->init_global(compass());
   for (int i = 1; i <= max_updates; ++i) {
     // Look around: turn 60 degrees in place (at 0.5 rad/s) between scans, so that six
@@ -69,16 +75,42 @@ void SimRobot::start_tracking(const Pose& pose, double sd_xy, double sd_theta) {
   fo.kld.min_particles = std::min<size_t>(fo.kld.min_particles, o_.tracking_particles);
   filter_ = std::make_unique<loc::ParticleFilter>(map_, fo);
   filter_->init_pose(pose, sd_xy, sd_theta);
+  tracking_ = true;
+  localizing_ = false;
+  lost_.reset();
   // A few scans standing still settle the cloud on the map.
   for (int i = 0; i < 3; ++i) filter_->update(laser_.scan(drive_.pose()), compass());
 }
 
 void SimRobot::filter_step(const Odometry& odo) {
   filter_->predict(odo);
-  filter_->update(laser_.scan(drive_.pose()), compass());
+  const std::vector<double> scan = laser_.scan(drive_.pose());
+  filter_->update(scan, compass());
+  if (!tracking_) return;
+  const loc::PoseEstimate e = filter_->estimate();
+  if (lost_.update(loc::scan_agreement(filter_->ray_caster(), e.pose, filter_->beam_angles(), scan, lost_.options().tolerance)))
+    relocalize();
+}
+
+void SimRobot::relocalize() {
+  const loc::PoseEstimate e = filter_->estimate();
+  spdlog::warn("lost: the scans no longer fit the estimate ({:.2f}, {:.2f}, {:.1f} deg; fit {:.2f}, usually {:.2f}); "
+               "truth ({:.2f}, {:.2f}); stopping to localize again",
+               e.pose.x, e.pose.y, loc::rad2deg(e.pose.theta), lost_.fast(), lost_.slow(), drive_.pose().x,
+               drive_.pose().y);
+  ++relocalizations_;
+  localizing_ = true;
+  pursuit_.clear();
+  goal_.reset();
+  path_request_.reset();
+  moving_ = false;
+  // The server fails the task and shows the robot localizing (docs/protocol.md).
+  client_.send(RequestOp::SendPos, Json{{"status", "lost"}, {"v", 0}});
+  if (localize()) report_pose(0, 0);
 }
 
 void SimRobot::report_pose(double v, double w) {
+  if (localizing_) return;  // no pose to report: the server was told (relocalize)
   const loc::PoseEstimate now = filter_->estimate();
   client_.send(RequestOp::SendPos, Json{{"x", now.pose.x}, {"y", now.pose.y}, {"theta", now.pose.theta}, {"v", v}, {"w", w}});
   if (zoom_) zoom_->update(now.pose.point(), time_s_);
@@ -166,6 +198,13 @@ void SimRobot::run(const std::atomic<bool>& stop, double duration_s) {
       }
     }
     const Odometry odo = drive_.step(v, c.w, o_.step_s);
+    if (o_.kidnap_at_s && time_s_ < *o_.kidnap_at_s && time_s_ + o_.step_s >= *o_.kidnap_at_s) {
+      spdlog::warn("kidnapped: moved from ({:.2f}, {:.2f}) to ({:.2f}, {:.2f}) without odometry", drive_.pose().x,
+                   drive_.pose().y, o_.kidnap_to.x, o_.kidnap_to.y);
+      drive_.stop_at(o_.kidnap_to);
+    }
+    // Lost and not found by the last try: look around again.
+    if (localizing_ && localize()) report_pose(0, 0);
     // Compose the increments since the last filter update (robot frame at that update).
     const double ct = std::cos(since_update.dtheta), st = std::sin(since_update.dtheta);
     since_update = {since_update.dx + ct * odo.dx - st * odo.dy, since_update.dy + st * odo.dx + ct * odo.dy,

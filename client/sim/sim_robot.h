@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "client/sim/laser_simulator.h"
+#include "client/localization/lost_detector.h"
 #include "client/localization/particle_filter.h"
 #include "client/robot_client.h"
 #include "client/sim/differential_drive.h"
@@ -33,6 +34,11 @@ struct SimRobotOptions {
   ZoomMapOptions zoom_options;
   bool realtime = true;              // sleep to keep pace with the wall clock
   unsigned seed = 1;
+  // A kidnapping (tests, demos): at this simulated time the true robot is moved to the
+  // pose without odometry. The lost detector should notice (lost_detector.h).
+  std::optional<double> kidnap_at_s;
+  Pose kidnap_to;
+  localization::LostDetectorOptions lost;
 };
 
 class SimRobot {
@@ -52,6 +58,7 @@ class SimRobot {
   localization::PoseEstimate estimate() const { return filter_->estimate(); }
   size_t goals_reached() const { return goals_reached_; }
   size_t goals_refused() const { return goals_refused_; }  // GetPath answered an Error
+  size_t relocalizations() const { return relocalizations_; }  // the lost detector fired
 
  private:
   void handle(const ReceivedAnswer& a);
@@ -59,6 +66,8 @@ class SimRobot {
   double compass();
   void stopped();
   void report_pose(double v, double w);  // SendPos of the filter's estimate
+  // The lost detector fired: stop, say so (SendPos "status": "lost"), localize again.
+  void relocalize();
 
   RobotClient& client_;
   SimRobotOptions o_;
@@ -66,6 +75,11 @@ class SimRobot {
   DifferentialDrive drive_;
   localization::LaserSimulator laser_;
   std::unique_ptr<localization::ParticleFilter> filter_;
+  localization::ParticleFilterOptions global_options_;  // of every global localization
+  localization::LostDetector lost_;
+  bool tracking_ = false;  // the detector watches only a tracking filter
+  bool localizing_ = false;  // lost and not localized again yet
+  size_t relocalizations_ = 0;
   PurePursuit pursuit_;
   std::unique_ptr<ZoomMapClient> zoom_;
   std::mt19937_64 rng_;

@@ -57,6 +57,10 @@ ServerConfig planning_defaults(const std::optional<std::string>& config_file) {
 }
 
 void refuse_if_lost(const RobotWhereabouts& w, const std::string& robot, const std::string& goal) {
+  if (w.state == RobotState::Localizing)
+    throw GoalRefused(goal + " for robot '" + robot +
+                      "' refused: the robot is localizing (its localization lost its pose); give the goal again once "
+                      "it reports a pose (fleetmap robots)");
   if (w.state != RobotState::Lost) return;
   // Refused, not queued: its last pose is stale, and a queued goal would start the
   // robot the moment it comes back, perhaps somewhere else (SPEC 5.3).

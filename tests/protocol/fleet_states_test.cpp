@@ -13,12 +13,13 @@ namespace fleetmap {
 namespace {
 
 TEST(FleetStates, RobotStatesAreTheSchemasEnumValues) {
-  // robots.state ENUM('offline','ready','moving','stopped','lost')
+  // robots.state ENUM('offline','ready','moving','stopped','lost','localizing')
   const std::pair<const char*, RobotState> values[] = {{"offline", RobotState::Offline},
                                                        {"ready", RobotState::Ready},
                                                        {"moving", RobotState::Moving},
                                                        {"stopped", RobotState::Stopped},
-                                                       {"lost", RobotState::Lost}};
+                                                       {"lost", RobotState::Lost},
+                                                       {"localizing", RobotState::Localizing}};
   for (const auto& [text, state] : values) {
     EXPECT_EQ(robot_state_from_string(text), state) << text;
     EXPECT_EQ(to_string(state), text);

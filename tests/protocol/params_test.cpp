@@ -152,6 +152,22 @@ TEST(ParamsSendPos, Valid) {
   EXPECT_DOUBLE_EQ(p.v, 1000);
 }
 
+TEST(ParamsSendPos, LostNeedsNoPoseAndOnlyTwoStatusesExist) {
+  EXPECT_FALSE(decode_send_pos(J(R"({"x": 1, "y": 2, "theta": 0, "v": 0})")).lost);
+  EXPECT_FALSE(decode_send_pos(J(R"({"x": 1, "y": 2, "theta": 0, "v": 0, "status": "localized"})")).lost);
+  const SendPosParams p = decode_send_pos(J(R"({"status": "lost"})"));
+  EXPECT_TRUE(p.lost);
+  EXPECT_DOUBLE_EQ(p.v, 0);
+  // A pose given with it is still checked.
+  expect_bad_params(decode_send_pos, R"({"status": "lost", "x": "here"})", "x");
+  // A localized SendPos still needs its pose.
+  expect_bad_params(decode_send_pos, R"({"status": "localized"})", "x");
+  for (const char* bad : {R"({"x": 0, "y": 0, "theta": 0, "v": 0, "status": "LOST"})",
+                          R"({"x": 0, "y": 0, "theta": 0, "v": 0, "status": true})",
+                          R"({"x": 0, "y": 0, "theta": 0, "v": 0, "status": null})"})
+    expect_bad_params(decode_send_pos, bad, "status");
+}
+
 TEST(ParamsSendPos, Errors) {
   expect_bad_params(decode_send_pos, R"({"y": 0, "theta": 0, "v": 0})", "x");
   expect_bad_params(decode_send_pos, R"({"x": 0, "theta": 0, "v": 0})", "y");

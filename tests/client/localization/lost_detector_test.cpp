@@ -24,10 +24,18 @@ TEST(ScanAgreement, CountsTheBeamsWithinTheTolerance) {
   std::vector<double> ranges(beams.size());
   caster.cast_scan(at.point(), at.theta, beams, ranges.data());
   EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, ranges, 0.5), 1.0);
-  // Ten beams shortened by 2 m (people in front of the wall) disagree, the rest agree.
+  // Ten beams shortened by 2 m (people in front of the wall) are left out: the map does
+  // not hold people. Ten beams 2 m longer than the walls allow disagree.
   for (size_t j = 0; j < 10; ++j) ranges[j * 13] -= 2.0;
-  EXPECT_NEAR(scan_agreement(caster, at, beams, ranges, 0.5), 121.0 / 131.0, 1e-12);
-  // The same scan seen from 3 m away, turned around, fits far worse.
+  EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, ranges, 0.5), 1.0);
+  for (size_t j = 0; j < 10; ++j) ranges[j * 13 + 1] += 2.0;
+  EXPECT_NEAR(scan_agreement(caster, at, beams, ranges, 0.5), 111.0 / 121.0, 1e-12);
+  // Within the tolerance is agreement.
+  ranges[5] += 0.4;
+  EXPECT_NEAR(scan_agreement(caster, at, beams, ranges, 0.5), 111.0 / 121.0, 1e-12);
+  // Every beam blocked right in front of the laser: nothing contradicts the pose.
+  EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, std::vector<double>(beams.size(), 0.2), 0.5), 1.0);
+  // The same scan seen from elsewhere, turned around, fits far worse.
   EXPECT_LT(scan_agreement(caster, {17, 7, 3.0}, beams, ranges, 0.5), 0.5);
   EXPECT_THROW(scan_agreement(caster, at, beams, std::vector<double>(3, 1.0), 0.5), std::invalid_argument);
 }
@@ -35,7 +43,8 @@ TEST(ScanAgreement, CountsTheBeamsWithinTheTolerance) {
 TEST(LostDetector, StaysFoundOnAGoodOrMerelyHarderPlace) {
   LostDetector d;
   for (int i = 0; i < 100; ++i) EXPECT_FALSE(d.update(i % 5 == 0 ? 0.8 : 0.95)) << i;
-  // A crowd: the fit drops to 0.7 and stays there. Above the floor: not lost.
+  // A harder stretch (glass walls): the fit drops to 0.7 and stays there. Above the
+  // floor: not lost.
   for (int i = 0; i < 100; ++i) EXPECT_FALSE(d.update(0.7)) << i;
 }
 

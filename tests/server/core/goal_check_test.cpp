@@ -124,6 +124,14 @@ TEST(GoalCheck, ALostRobotIsRefusedOthersPass) {
     EXPECT_NE(m.find("robot 'r1' refused: the robot is lost (silent since 2026-12-01 10:00:00)"), std::string::npos)
         << m;
   }
+  // A robot whose localization lost its pose is refused too, saying why.
+  w.state = RobotState::Localizing;
+  try {
+    refuse_if_lost(w, "r1", "goal (1, 2)");
+    FAIL() << "a localizing robot's goal must be refused";
+  } catch (const GoalRefused& e) {
+    EXPECT_NE(std::string(e.what()).find("the robot is localizing"), std::string::npos) << e.what();
+  }
   for (RobotState s : {RobotState::Offline, RobotState::Ready, RobotState::Moving, RobotState::Stopped}) {
     w.state = s;
     EXPECT_NO_THROW(refuse_if_lost(w, "r1", "goal (1, 2)"));

@@ -102,6 +102,27 @@ TEST_F(BatchTest, ALostRobotThatSendsAnythingIsReadyAgain) {
   EXPECT_EQ(robots.at("r8").robot.state, RobotState::Lost);
 }
 
+TEST_F(BatchTest, ARobotWhoseLocalizationIsLostIsLocalizingUntilItSendsAPose) {
+  robots.at("r7").robot.x = 4;
+  robots.at("r7").open_task = task(3, 7, TaskState::Active, 3, 8);
+  serve({request(1, "r7", "SendPos", R"({"status": "lost"})"), request(2, "r7", "Alive", "{}")});
+  ASSERT_EQ(sink.rows.size(), 1u);
+  // Another request (Alive) does not bring it back, unlike a silent robot.
+  EXPECT_EQ(sink.rows[0].first.state, RobotState::Localizing);
+  EXPECT_EQ(sink.rows[0].first.x, 4);  // the last known pose stays
+  EXPECT_TRUE(sink.served_requests[0].second.poses.empty());  // no trajectory point
+  // Its task failed, with the reason.
+  EXPECT_FALSE(robots.at("r7").open_task);
+  ASSERT_EQ(records.task_states.size(), 1u);
+  EXPECT_EQ(records.task_states[0], (std::pair<unsigned long long, TaskState>{3, TaskState::Failed}));
+  EXPECT_NE(records.task_reasons[3].find("localization"), std::string::npos) << records.task_reasons[3];
+  sink.rows.clear();
+  serve({request(3, "r7", "SendPos", R"({"x": 6, "y": 2, "theta": 0, "v": 0})")});
+  ASSERT_EQ(sink.rows.size(), 1u);
+  EXPECT_EQ(sink.rows[0].first.state, RobotState::Ready);
+  EXPECT_EQ(sink.rows[0].first.x, 6);
+}
+
 TEST_F(BatchTest, ARemovedRobotsRequestsLeaveTheQueueUnanswered) {
   robots.at("r8").robot.removed = true;
   serve({request(1, "r8", "Ready", R"({"magic": 1})"), request(2, "r7", "Alive", "{}")});
