@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "common/geometry/rect_distance.h"
+#include "common/raycast/beam_order.h"
+#include "common/raycast/occlusion.h"
 
 namespace fleetmap {
 namespace {
@@ -30,7 +32,8 @@ size_t CandidateGrid::estimate_bytes(const LaserObstacles& obstacles, double cel
   return static_cast<size_t>(std::min(sizeof(Candidate) * entries + sizeof(uint32_t) * cells, 1e18));
 }
 
-CandidateGrid::CandidateGrid(const LaserObstacles& obstacles, double cell, double rmax, size_t max_bytes)
+CandidateGrid::CandidateGrid(const LaserObstacles& obstacles, double cell, double rmax, size_t max_bytes,
+                             size_t occluders)
     : wall_count_(static_cast<uint32_t>(obstacles.walls.size())) {
   if (obstacles.obstacles.empty()) return;
   while (estimate_bytes(obstacles, cell, rmax) > max_bytes) cell *= 2;
@@ -91,7 +94,57 @@ CandidateGrid::CandidateGrid(const LaserObstacles& obstacles, double cell, doubl
   entries = {};
   for (size_t c = 0; c < cells(); ++c) std::sort(sorted.begin() + offsets_[c], sorted.begin() + offsets_[c + 1]);
   list_.reserve(sorted.size());
-  for (const auto& [key, id] : sorted) list_.push_back({id, lower_bound(key)});
+  if (occluders == 0) {
+    for (const auto& [key, id] : sorted) list_.push_back({id, lower_bound(key)});
+    return;
+  }
+  // Occlusion culling (occlusion.h): a wall hidden from the whole cell by one of the
+  // nearest walls kept so far is left out. A kept occluder may itself be hidden by a
+  // nearer one only if it was not kept, so every drop is backed by a kept wall or by a
+  // chain of strictly nearer hiders ending at one.
+  std::vector<uint32_t> kept_offsets(cells() + 1, 0);
+  // A hider must cover, from the cell's centre, the whole angle the wall covers (what
+  // hides() implies for the centre): a cheap filter on pseudo-angle intervals first.
+  struct Hider {
+    uint32_t id;
+    double lo, hi;  // pseudo-angles from the centre, hi in [lo, lo + 2]
+  };
+  std::vector<Hider> hiders;
+  constexpr double kSlack = 1e-6;  // pseudo-angle units, far above their rounding
+  for (int iy = 0; iy < frame_.height; ++iy)
+    for (int ix = 0; ix < frame_.width; ++ix) {
+      const size_t c = frame_.index(ix, iy);
+      const Rect rect = frame_.cell_rect(ix, iy);
+      const Point centre = frame_.centre(ix, iy);
+      hiders.clear();
+      for (uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) {
+        const auto [key, id] = sorted[k];
+        if (id < wall_count_) {
+          const RaySegment& w = obstacles.walls[id];
+          const Point a = w.a - centre, b = a + w.e;
+          double lo = pseudo_angle(a), hi = pseudo_angle(b);
+          if (cross(a, w.e) < 0) std::swap(lo, hi);
+          if (hi < lo) hi += 4;
+          const bool on_line = std::fabs(cross(a, w.e)) <= 1e-9 * (1 + dot(w.e, w.e));
+          bool hidden = false;
+          if (!on_line)
+            for (const Hider& h : hiders) {
+              const double shift = lo + kSlack < h.lo ? 4 : (lo - kSlack > h.hi ? -4 : 0);
+              if (h.lo - kSlack <= lo + shift && hi + shift <= h.hi + kSlack &&
+                  hides(obstacles.walls[h.id], w, rect)) {
+                hidden = true;
+                break;
+              }
+            }
+          if (hidden) continue;
+          if (hiders.size() < occluders && !on_line) hiders.push_back({id, lo, hi});
+        }
+        list_.push_back({id, lower_bound(key)});
+      }
+      kept_offsets[c + 1] = static_cast<uint32_t>(list_.size());
+    }
+  offsets_ = std::move(kept_offsets);
+  list_.shrink_to_fit();
 }
 
 size_t CandidateGrid::memory_bytes() const {

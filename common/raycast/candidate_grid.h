@@ -30,8 +30,10 @@ class CandidateGrid {
     float nearest;  // metres: no point of the cell is nearer to it (rounded down)
   };
 
-  // cell: side in metres, doubled until the lists fit in max_bytes.
-  CandidateGrid(const LaserObstacles& obstacles, double cell, double rmax, size_t max_bytes);
+  // cell: side in metres, doubled until the lists fit in max_bytes. occluders > 0: each
+  // list leaves out the walls that one of its `occluders` nearest kept walls hides from
+  // the whole cell (occlusion.h); 0 keeps every wall within reach.
+  CandidateGrid(const LaserObstacles& obstacles, double cell, double rmax, size_t max_bytes, size_t occluders = 0);
 
   // The candidates for a ray from p (empty outside the grid: nothing is within rmax).
   std::span<const Candidate> near(Point p) const {

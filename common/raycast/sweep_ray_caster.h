@@ -24,9 +24,15 @@
 
 namespace fleetmap {
 
+// How a scan is swept over its list (common/raycast/sweep_kernels.h).
+enum class SweepKernel { batched, per_beam };
+
 struct SweepOptions {
-  double cell = 4.0;             // metres (bench-raycast compares sizes)
+  double cell = 1.0;             // metres (bench-raycast compares sizes)
   size_t max_bytes = 64u << 20;  // budget of the candidate lists
+  SweepKernel kernel = SweepKernel::batched;
+  // Walls of a cell's list tried as occluders of the farther ones (0: no culling).
+  size_t occluders = 32;
 };
 
 class SweepRayCaster : public RayCaster {
@@ -43,6 +49,7 @@ class SweepRayCaster : public RayCaster {
 
  private:
   RayCasterOptions options_;
+  SweepKernel kernel_;
   LaserObstacles obstacles_;
   CandidateGrid candidates_;
 };
