@@ -25,6 +25,20 @@ const BeamOrder& beam_order(const std::vector<double>& rel) {
     order.pseudo[k] = p[order.beam[k]];
     order.unit[k] = ray_direction(rel[order.beam[k]]);
   }
+  // The largest gap between cyclically consecutive beams; the arc is the rest.
+  order.all_around = true;
+  if (n > 0) {
+    double gap = order.pseudo[0] + 4 - order.pseudo[n - 1];
+    size_t after = 0;
+    for (size_t k = 1; k < n; ++k)
+      if (order.pseudo[k] - order.pseudo[k - 1] > gap) {
+        gap = order.pseudo[k] - order.pseudo[k - 1];
+        after = k;
+      }
+    order.arc_first = after;
+    order.arc_last = (after + n - 1) % n;
+    order.all_around = gap < 0.01;  // too small to skip anything, and safe from wrapping
+  }
   order.first.resize(BeamOrder::kBins + 1);
   for (int b = 0; b <= BeamOrder::kBins; ++b)
     order.first[b] = static_cast<uint32_t>(

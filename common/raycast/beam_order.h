@@ -31,6 +31,10 @@ struct BeamOrder {
   std::vector<uint32_t> beam;   // beam[k]: the beam with the k-th pseudo-angle
   std::vector<Point> unit;      // unit[k]: ray_direction() of that beam's relative angle
   std::vector<uint32_t> first;  // first[b]: how many pseudo-angles are below b / kBinsPerUnit
+  // The smallest arc holding every beam runs counter-clockwise from position arc_first
+  // to position arc_last; all_around when the beams leave no gap worth testing against.
+  size_t arc_first = 0, arc_last = 0;
+  bool all_around = true;
 
   // The first k with pseudo[k] >= x (strict: > x), for x in [0, 4].
   size_t lower(double x, bool strict) const {
@@ -47,8 +51,8 @@ const BeamOrder& beam_order(const std::vector<double>& relative_angles);
 // Calls run(k0, k1) for each run [k0, k1) of positions whose pseudo-angle lies in
 // [lo, hi] modulo 4 (at most two runs).
 template <class F>
-void for_runs_between(const BeamOrder& order, double lo, double hi, F&& run) {
-  auto one = [&](double a, double b) {
+[[gnu::always_inline]] inline void for_runs_between(const BeamOrder& order, double lo, double hi, F&& run) {
+  auto one = [&](double a, double b) __attribute__((always_inline)) {
     const size_t k0 = order.lower(a, false), k1 = order.lower(b, true);
     if (k0 < k1) run(k0, k1);
   };

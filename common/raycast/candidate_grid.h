@@ -28,6 +28,11 @@ class CandidateGrid {
   struct Candidate {
     uint32_t id;
     float nearest;  // metres: no point of the cell is nearer to it (rounded down)
+    // Every direction from the cell to it lies in the pseudo-angle arc (beam_order.h)
+    // [arc_lo, arc_lo + arc_width] modulo 4, widened beyond the sweep's slack; a width
+    // of 4 (stairs, ramps, walls touching the cell) is every direction.
+    float arc_lo;
+    float arc_width;
   };
 
   // cell: side in metres, doubled until the lists fit in max_bytes. occluders > 0: each

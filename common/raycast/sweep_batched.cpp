@@ -89,6 +89,12 @@ __attribute__((target_clones("avx2", "default"))) void sweep_batched(const Sweep
   auto exact_run = [&](size_t k0, size_t k1, auto&& test) {
     for (size_t k = k0; k < k1; ++k) r[k] = std::min(r[k], test(Point{dx[k], dy[k]}));
   };
+  // The scan's arc in the world frame: the pseudo-angle is monotonic in the angle, so
+  // the rotated arc runs from the first beam's world pseudo-angle to the last's.
+  const bool all_around = order.all_around;
+  const double arc_start = all_around ? 0 : pseudo_angle({dx[order.arc_first], dy[order.arc_first]});
+  double arc_width = all_around ? 4 : pseudo_angle({dx[order.arc_last], dy[order.arc_last]}) - arc_start;
+  if (arc_width < 0) arc_width += 4;
   const double reach2 = in.reach * in.reach;
   const std::vector<RaySegment>& walls = in.obstacles->walls;
   size_t since_check = 0;
@@ -98,6 +104,14 @@ __attribute__((target_clones("avx2", "default"))) void sweep_batched(const Sweep
     if (++since_check == 8) {
       since_check = 0;
       if (!any_longer(r, n, cand.nearest)) break;
+    }
+    // The candidate's arc from the cell (candidate_grid.h) misses the scan's: no beam
+    // comes near it.
+    if (!all_around) {
+      double d1 = cand.arc_lo - arc_start, d2 = -d1;
+      d1 += d1 < 0 ? 4 : 0;
+      d2 += d2 < 0 ? 4 : 0;
+      if (!(d1 <= arc_width || d2 <= cand.arc_width)) continue;
     }
     if (cand.id >= in.walls) {
       const SpecialObstacle& sp = in.obstacles->specials[cand.id - in.walls];
@@ -135,7 +149,7 @@ __attribute__((target_clones("avx2", "default"))) void sweep_batched(const Sweep
     const Point b = a + seg.e;
     const bool exact = w.num_t * w.num_t * seg.inv_len2 <= kSafeSine2 * std::max(dot(a, a), dot(b, b)) ||
                        std::fabs(w.num_t) <= seg.tol_cross;
-    for_runs_between(order, pa - kSweepAngleSlack, pb + kSweepAngleSlack, [&](size_t k0, size_t k1) {
+    for_runs_between(order, pa - kSweepAngleSlack, pb + kSweepAngleSlack, [&](size_t k0, size_t k1) __attribute__((always_inline)) {
       if (exact)
         exact_run(k0, k1, test);
       else

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/raycast/beam_order.h"
 #include "common/raycast/grid_ray_caster.h"
 #include "common/raycast/sweep_kernels.h"
 
@@ -31,8 +32,13 @@ size_t SweepRayCaster::memory_bytes() const {
 double SweepRayCaster::cast_direction(Point o, Point d) const {
   double best = options_.rmax;
   const uint32_t walls = candidates_.wall_count();
+  const double pd = pseudo_angle(d);
   for (const CandidateGrid::Candidate& c : candidates_.near(o)) {
     if (c.nearest >= best) break;  // nearest first: nothing further on can be nearer
+    // The ray's direction outside the arc of directions from the cell to it: no hit.
+    double off = pd - c.arc_lo;
+    off += off < 0 ? 4 : 0;
+    if (off > c.arc_width) continue;
     if (c.id >= walls) {
       best = std::min(best, obstacles_.specials[c.id - walls].distance(o, d));
       continue;
