@@ -18,9 +18,13 @@ namespace fleetmap {
 
 // Pseudo-angle of (x, y) in [0, 4): grows with the angle from +x counter-clockwise, as
 // atan2 does, at a rate between 1/2 and 1 per radian.
+// Written as selects of constants (2 - r, 4 + r or r), which compile without branches:
+// the sweeps call it on walls in no predictable order.
 inline double pseudo_angle(Point v) {
   const double r = v.y / (std::fabs(v.x) + std::fabs(v.y));
-  return v.x < 0 ? 2 - r : (v.y < 0 ? 4 + r : r);
+  const double base = v.x < 0 ? 2.0 : (v.y < 0 ? 4.0 : 0.0);
+  const double sign = v.x < 0 ? -1.0 : 1.0;
+  return base + sign * r;
 }
 
 struct BeamOrder {

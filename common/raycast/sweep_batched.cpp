@@ -141,9 +141,11 @@ __attribute__((target_clones("avx2", "default"))) void sweep_batched(const Sweep
     // The wall's ends in the robot's frame, and the angle between them counter-clockwise:
     // less than pi, since the origin is not on the wall.
     const Point ar = to_robot(a), er = to_robot(seg.e);
-    double pa = pseudo_angle(ar), pb = pseudo_angle(ar + er);
-    if (cross(ar, er) < 0) std::swap(pa, pb);
-    if (pb < pa) pb += 4;
+    const double p0 = pseudo_angle(ar), p1 = pseudo_angle(ar + er);
+    const bool clockwise = cross(ar, er) < 0;
+    const double pa = clockwise ? p1 : p0;
+    double pb = clockwise ? p0 : p1;
+    pb += pb < pa ? 4.0 : 0.0;
     // The origin near the wall's line (beyond its ends), where a beam may be parallel
     // to it or the test's on-the-line branch applies: ray_segment_distance() decides.
     const Point b = a + seg.e;
