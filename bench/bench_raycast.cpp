@@ -292,7 +292,8 @@ int main(int argc, char** argv) {
   app.add_option("--seed-poses", set.poses_seed, "random poses for the seed's method")->capture_default_str();
   app.add_option("--repeats", set.repeats, "runs per figure (best kept)")->capture_default_str();
   app.add_option("--threads", set.threads, "threads of the multi-threaded figures")->capture_default_str();
-  app.add_option("--cell", set.cell, "cell of the fast caster's candidate grid, metres")->capture_default_str();
+  app.add_option("--cell", set.cell, "cell of the fast caster's candidate grid, metres (0: by density)")
+      ->capture_default_str();
   app.add_option("--occluders", set.occluders, "walls tried as occluders per cell (0: no culling)")
       ->capture_default_str();
   app.add_flag("--alternatives", set.alternatives, "also time the other designs and cell sizes tried");

@@ -56,6 +56,13 @@ Arc arc_from_cell(const Rect& cell, const RaySegment& w) {
 
 }  // namespace
 
+double CandidateGrid::estimate_mean_list(const LaserObstacles& obstacles, double cell, double rmax) {
+  const Rect& b = obstacles.bounds;
+  if (obstacles.obstacles.empty()) return 0;
+  const double cells = ((b.xmax - b.xmin + 2 * rmax) / cell + 3) * ((b.ymax - b.ymin + 2 * rmax) / cell + 3);
+  return (estimate_bytes(obstacles, cell, rmax) - sizeof(uint32_t) * cells) / sizeof(Candidate) / cells;
+}
+
 size_t CandidateGrid::estimate_bytes(const LaserObstacles& obstacles, double cell, double rmax) {
   // Each wall's bounding box grown by rmax, in cells: an upper bound of its entries.
   double entries = 0;

@@ -54,6 +54,8 @@ class CandidateGrid {
   size_t memory_bytes() const;
   // Bytes the lists would take with this cell size (what the constructor checks).
   static size_t estimate_bytes(const LaserObstacles& obstacles, double cell, double rmax);
+  // The entries per cell that estimate implies (an upper bound of the mean list).
+  static double estimate_mean_list(const LaserObstacles& obstacles, double cell, double rmax);
 
  private:
   GridFrame frame_;

@@ -16,13 +16,21 @@ constexpr double kSideSlack = 4 * kRayTolerance;
 
 constexpr double kLargestCell = 8.0;  // metres
 
+double cell_for(const LaserObstacles& obstacles, const SweepOptions& sweep, double rmax) {
+  if (sweep.cell > 0) return sweep.cell;
+  return CandidateGrid::estimate_mean_list(obstacles, SweepOptions::kSparseCell, rmax) > SweepOptions::kDenseList
+             ? SweepOptions::kDenseCell
+             : SweepOptions::kSparseCell;
+}
+
 }  // namespace
 
 SweepRayCaster::SweepRayCaster(const Map& map, RayCasterOptions options, SweepOptions sweep)
     : options_(options),
       kernel_(sweep.kernel),
       obstacles_(prepare_laser_obstacles(map, options.laser_height)),
-      candidates_(obstacles_, sweep.cell, options.rmax, sweep.max_bytes, sweep.occluders) {}
+      candidates_(obstacles_, cell_for(obstacles_, sweep, options.rmax), options.rmax, sweep.max_bytes,
+                  sweep.occluders) {}
 
 size_t SweepRayCaster::memory_bytes() const {
   return candidates_.memory_bytes() + obstacles_.walls.capacity() * sizeof(RaySegment) +

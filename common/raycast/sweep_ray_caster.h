@@ -28,7 +28,11 @@ namespace fleetmap {
 enum class SweepKernel { batched, per_beam };
 
 struct SweepOptions {
-  double cell = 1.0;             // metres (bench-raycast compares sizes)
+  // Metres; 0 picks by density: kDenseCell where the kSparseCell lists would average
+  // more than kDenseList entries (a building floor), else kSparseCell (a campus, where
+  // small cells only cost memory and build time). bench-raycast compares sizes.
+  double cell = 0;
+  static constexpr double kDenseCell = 1.0, kSparseCell = 4.0, kDenseList = 32;
   size_t max_bytes = 64u << 20;  // budget of the candidate lists
   SweepKernel kernel = SweepKernel::batched;
   // Walls of a cell's list tried as occluders of the farther ones (0: no culling).
