@@ -1,8 +1,9 @@
 #pragma once
 // For each cell of a uniform grid, every obstacle that can stop a laser ray of length
 // rmax cast from anywhere in the cell (its "potentially visible set"): the walls whose
-// distance to the cell is at most rmax, and the stairs and ramps whose bounding box is.
-// One list read per scan replaces a walk through many cells per ray, which is what
+// distance to the cell is at most rmax, and the stairs and ramps whose bounding box is;
+// optionally less the walls another wall of the list hides from the whole cell
+// (occlusion.h), which can never end a ray first. One list read per scan replaces a walk through many cells per ray, which is what
 // costs on random poses: the list is one or two cache lines, the walls it names are a
 // small array that stays in cache.
 //
