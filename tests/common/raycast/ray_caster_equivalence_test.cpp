@@ -229,15 +229,15 @@ TEST(RayCasterEquivalence, OtherCellSizes) {
 }
 
 // The dense floor, where occlusion culling drops the most walls, through each sweep
-// kernel with and without culling and with fewer or more occluders tried.
+// kernel with and without culling and with fewer or more occluders tried (cells of 2 and
+// 4 m: their lists build quickly).
 TEST(RayCasterEquivalence, SweepKernelsAndCulling) {
   const std::vector<Candidate> sweeps = {
-      sweep("per beam, culled", sweep_options(1, 32, SweepKernel::per_beam)),
-      sweep("batched, no cull", sweep_options(1, 0, SweepKernel::batched)),
+      sweep("per beam 2 m, 32", sweep_options(2, 32, SweepKernel::per_beam)),
+      sweep("batched 4 m, no cull", sweep_options(4, 0, SweepKernel::batched)),
       sweep("batched 4 m, 8", sweep_options(4, 8, SweepKernel::batched)),
       sweep("batched 2 m, 64", sweep_options(2, 64, SweepKernel::batched))};
   expect_equivalent("GDC1 (varied)", varied(gdc1(), 4), 0.3, sweeps, kRays / 10, 0.2);
-  expect_equivalent("GDC1", gdc1(), 1.0, sweeps, kRays / 10, 0.5);
 }
 
 }  // namespace
