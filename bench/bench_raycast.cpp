@@ -1,19 +1,23 @@
-// Ray casting benchmark (SPEC 6, 8). The seed's bounding-circle method (the baseline,
-// SeedRayCaster) and the fast caster (SweepRayCaster) on the campus map, measured in
+// Ray casting benchmark (SPEC 6, 8). On the dense floor (GDC1) and on the campus, in
 // the same run with the seed's parameters (RMAX 15 m, NL 131 beams over 180 degrees,
-// hL 0.3 m) from random poses: rays/s on 1 and 2 threads, the fast/seed ratio, one
-// particle-filter update (NP 6000 poses x NL 131 rays) in Hz, and the fast structure's
-// memory. Targets: >= 40 M rays/s on 2 cores, >= 150x the seed, update
-// >= 50 Hz, structure < 256 MiB.
+// hL 0.3 m) from random poses: the seed's bounding-circle method (SeedRayCaster), the
+// first sweep ("before": SweepRayCaster with 4 m cells, every wall within reach,
+// per-beam kernel) and the fast caster (make_fast_ray_caster's SweepRayCaster: 1 m
+// cells, occlusion-culled lists, batched kernel): rays/s on 1 and 2 threads, ratios,
+// one particle-filter update (NP 6000 poses x NL 131 rays) in Hz, and each structure's
+// memory. Targets on GDC1: >= 150 M rays/s on 2 cores, update >= 200 Hz, structure
+// < 64 MiB; on the campus, no slower than before.
 //
 // The machine is shared: besides wall-clock rates (best of --repeats runs) it prints
-// rays per CPU-second of the casting threads, which other work disturbs much less.
+// rays per CPU-second of the casting threads, which other work disturbs much less;
+// "CPU-bound" figures are those times the threads, as if each had its core.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <memory>
 #include <random>
 #include <string>
 #include <thread>
@@ -113,58 +117,83 @@ void row(const std::string& name, Rate one, Rate many, const std::string& note) 
   std::printf("%-40s %9.2f M %9.2f M %9.2f M   %s\n", name.c_str(), one.wall, many.wall, one.cpu, note.c_str());
 }
 
-}  // namespace
+struct Update {
+  double hz_median = 0, hz_best = 0, hz_cpu = 0;
+};
 
-int main(int argc, char** argv) {
-  CLI::App app{"bench-raycast: the seed's bounding-circle ray casting vs the fast caster, same run"};
-  std::string map_path = real_map_path("UT_Campus.vectormap.txt");
+// One particle-filter update: NP scans from NP poses on `threads` threads.
+Update filter_update(const RayCaster& rc, const std::vector<Pose>& pf, const std::vector<double>& beams, int threads,
+                     int repeats) {
+  std::vector<double> wall;
+  double cpu_best = 1e300;
+  for (int r = 0; r < std::max(3, 2 * repeats); ++r) {
+    const Timing t = time_scans(rc, pf, beams, threads);
+    wall.push_back(t.wall);
+    cpu_best = std::min(cpu_best, t.cpu);
+  }
+  std::sort(wall.begin(), wall.end());
+  return {1 / wall[wall.size() / 2], 1 / wall[0], threads / cpu_best};
+}
+
+struct Settings {
   RayCasterOptions opt{0.3, 15.0};
-  int beams_n = 131, particles = 6000, repeats = 3, threads = 2;
+  std::vector<double> beams;
+  int particles = 6000, repeats = 3, threads = 2;
   size_t poses_fast = 30000, poses_seed = 5000;
-  double fov_deg = 180, cell = SweepOptions{}.cell;
+  double cell = SweepOptions{}.cell;
+  size_t occluders = SweepOptions{}.occluders;
   bool alternatives = false;
-  app.add_option("--map", map_path, "AMRL vector map (.vectormap.txt) or seed map (.map)")->capture_default_str();
-  app.add_option("--laser-height", opt.laser_height, "hL, metres")->capture_default_str();
-  app.add_option("--rmax", opt.rmax, "metres")->capture_default_str();
-  app.add_option("--beams", beams_n, "NL")->capture_default_str();
-  app.add_option("--fov", fov_deg, "degrees")->capture_default_str();
-  app.add_option("--particles", particles, "NP of the filter update")->capture_default_str();
-  app.add_option("--poses", poses_fast, "random poses for the fast casters")->capture_default_str();
-  app.add_option("--seed-poses", poses_seed, "random poses for the seed's method")->capture_default_str();
-  app.add_option("--repeats", repeats, "runs per figure (best kept)")->capture_default_str();
-  app.add_option("--threads", threads, "threads of the multi-threaded figures")->capture_default_str();
-  app.add_option("--cell", cell, "cell of the fast caster's candidate grid, metres")->capture_default_str();
-  app.add_flag("--alternatives", alternatives, "also time the other designs and cell sizes tried");
-  CLI11_PARSE(app, argc, argv);
+};
 
+struct MapResult {
+  Rate fast2, before2;
+  double fast_cpu = 0, before_cpu = 0;
+  Update fast_update, before_update;
+  double fast_mib = 0;
+};
+
+template <class F>
+double build_ms(F&& f) {
+  const auto t0 = Clock::now();
+  f();
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+MapResult bench_map(const std::string& map_path, const Settings& set) {
   const Map map = read_map_file(map_path);
-  const std::vector<double> beams = evenly_spread_angles(beams_n, fov_deg * kPi / 180);
-  std::printf(
-      "map %s: %zu obstacles, %zu segments; rmax %.1f m, %d beams over %.0f deg, hL %.2f m; "
-      "%u hardware threads\n",
-      map_path.c_str(), map.obstacles.size(), map.segment_count(), opt.rmax, beams_n, fov_deg, opt.laser_height,
-      std::thread::hardware_concurrency());
+  const std::vector<double>& beams = set.beams;
+  const RayCasterOptions opt = set.opt;
+  const int threads = set.threads, repeats = set.repeats;
+  std::printf("== map %s: %zu obstacles, %zu segments; rmax %.1f m, %zu beams, hL %.2f m\n", map_path.c_str(),
+              map.obstacles.size(), map.segment_count(), opt.rmax, beams.size(), opt.laser_height);
 
-  auto t0 = Clock::now();
-  const SeedRayCaster seed(map, opt);
-  const double seed_build = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-  t0 = Clock::now();
-  const SweepRayCaster fast(map, opt, SweepOptions{cell});
-  const double fast_build = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  std::unique_ptr<SeedRayCaster> seed_p;
+  std::unique_ptr<SweepRayCaster> fast_p, before_p;
+  const double seed_build = build_ms([&] { seed_p = std::make_unique<SeedRayCaster>(map, opt); });
+  SweepOptions fast_opt{set.cell};
+  fast_opt.occluders = set.occluders;
+  SweepOptions before_opt{4.0};
+  before_opt.occluders = 0;
+  before_opt.kernel = SweepKernel::per_beam;
+  const double fast_build = build_ms([&] { fast_p = std::make_unique<SweepRayCaster>(map, opt, fast_opt); });
+  const double before_build = build_ms([&] { before_p = std::make_unique<SweepRayCaster>(map, opt, before_opt); });
+  const SeedRayCaster& seed = *seed_p;
+  const SweepRayCaster &fast = *fast_p, &before = *before_p;
 
-  const std::vector<Pose> poses = random_poses(map, poses_fast, 1);
-  const std::vector<Pose> seed_poses(poses.begin(), poses.begin() + std::min(poses_seed, poses.size()));
+  const std::vector<Pose> poses = random_poses(map, set.poses_fast, 1);
+  const std::vector<Pose> seed_poses(poses.begin(), poses.begin() + std::min(set.poses_seed, poses.size()));
 
   // Same rays, same answers: the figures below compare equal work.
   size_t hits = 0, differ = 0;
   {
-    std::vector<double> a(beams.size()), b(beams.size());
+    std::vector<double> a(beams.size()), b(beams.size()), c(beams.size());
     for (const Pose& q : seed_poses) {
       seed.cast_scan(q.p, q.theta, beams, a.data());
       fast.cast_scan(q.p, q.theta, beams, b.data());
+      before.cast_scan(q.p, q.theta, beams, c.data());
       for (size_t j = 0; j < beams.size(); ++j) {
         hits += b[j] < opt.rmax;
-        differ += std::fabs(a[j] - b[j]) > 1e-6;
+        differ += std::fabs(a[j] - b[j]) > 1e-6 || std::fabs(a[j] - c[j]) > 1e-6;
       }
     }
   }
@@ -173,23 +202,37 @@ int main(int argc, char** argv) {
 
   std::printf("scans from random poses                  %11s %11s %11s\n", "1 thread", "2 threads", "per CPU-s");
   const Rate s1 = rate(seed, seed_poses, beams, 1, repeats), s2 = rate(seed, seed_poses, beams, threads, repeats);
-  char note[96];
+  char note[128];
   std::snprintf(note, sizeof note, "build %.1f ms", seed_build);
   row("seed: bounding circles per scan", s1, s2, note);
+  const Rate b1 = rate(before, poses, beams, 1, repeats), b2 = rate(before, poses, beams, threads, repeats);
+  std::snprintf(note, sizeof note, "build %.1f ms, %.2f MiB", before_build, mib(before.memory_bytes()));
+  row("before: sweep, 4 m cells, per beam", b1, b2, note);
   const Rate f1 = rate(fast, poses, beams, 1, repeats), f2 = rate(fast, poses, beams, threads, repeats);
   std::snprintf(note, sizeof note, "build %.1f ms, %.2f MiB", fast_build, mib(fast.memory_bytes()));
-  row("fast: sweep, " + std::to_string(fast.candidates().cell()).substr(0, 4) + " m candidate cells", f1, f2, note);
+  row("fast: sweep, " + std::to_string(fast.candidates().cell()).substr(0, 4) + " m cells, culled, batched", f1, f2,
+      note);
+  std::printf("%-40s %9.1f x %9.1f x %9.1f x\n", "ratio fast / before", f1.wall / b1.wall, f2.wall / b2.wall,
+              f1.cpu / b1.cpu);
   std::printf("%-40s %9.1f x %9.1f x %9.1f x\n", "ratio fast / seed", f1.wall / s1.wall, f2.wall / s2.wall,
               f1.cpu / s1.cpu);
 
-  if (alternatives) {
+  if (set.alternatives) {
     std::printf("\nalternatives tried (same poses and beams)\n");
-    for (double c : {1.0, 2.0, 8.0}) {
-      const SweepRayCaster sw(map, opt, SweepOptions{c});
-      std::snprintf(note, sizeof note, "%.2f MiB", mib(sw.memory_bytes()));
-      row("sweep, " + std::to_string(c).substr(0, 3) + " m candidate cells", rate(sw, poses, beams, 1, repeats),
-          rate(sw, poses, beams, threads, repeats), note);
-    }
+    for (double c : {1.0, 2.0, 4.0})  // 0.5 m lists would not fit: the grid doubles it
+      for (size_t occ : {size_t{0}, size_t{16}, size_t{32}, size_t{64}})
+        for (SweepKernel k : {SweepKernel::per_beam, SweepKernel::batched}) {
+          if (k == SweepKernel::per_beam && occ != 0 && occ != 32) continue;
+          SweepOptions so{c};
+          so.occluders = occ;
+          so.kernel = k;
+          std::unique_ptr<SweepRayCaster> sw;
+          const double ms = build_ms([&] { sw = std::make_unique<SweepRayCaster>(map, opt, so); });
+          std::snprintf(note, sizeof note, "build %.1f ms, %.2f MiB", ms, mib(sw->memory_bytes()));
+          row("sweep " + std::to_string(c).substr(0, 3) + " m, " + std::to_string(occ) + " occluders, " +
+                  (k == SweepKernel::batched ? "batched" : "per beam"),
+              rate(*sw, poses, beams, 1, repeats), rate(*sw, poses, beams, threads, repeats), note);
+        }
     struct Alt {
       const char* name;
       GridOptions g;
@@ -203,45 +246,76 @@ int main(int argc, char** argv) {
     }
   }
 
-  // Single rays (cast): the seed culls per ray, the fast caster reads one list per ray.
+  // Single rays (cast): the seed culls per ray, the sweeps read one list per ray.
   {
     const std::vector<Pose> rays = random_poses(map, 200000, 2);
     const std::vector<Pose> few(rays.begin(), rays.begin() + 20000);
     const GridRayCaster grid(map, opt);
     const double seed_single = single_rate(seed, few), fast_single = single_rate(fast, rays);
     std::printf(
-        "\nsingle random rays (cast), M rays per CPU-s: seed (culling per ray) %.3f, fast %.2f (%.0f x),"
+        "\nsingle random rays (cast), M rays per CPU-s: seed (culling per ray) %.3f, before %.2f, fast %.2f,"
         " grid walk 1 m %.2f\n",
-        seed_single, fast_single, fast_single / seed_single, single_rate(grid, rays));
-    std::printf("fast scans per CPU-s / seed culling per ray: %.0f x\n", f1.cpu / seed_single);
+        seed_single, single_rate(before, rays), fast_single, single_rate(grid, rays));
   }
 
-  // One particle-filter update: NP scans from NP poses on `threads` threads.
-  const std::vector<Pose> pf(poses.begin(), poses.begin() + std::min<size_t>(particles, poses.size()));
-  std::vector<double> wall;
-  double cpu_best = 1e300;
-  for (int r = 0; r < std::max(3, 2 * repeats); ++r) {
-    const Timing t = time_scans(fast, pf, beams, threads);
-    wall.push_back(t.wall);
-    cpu_best = std::min(cpu_best, t.cpu);
-  }
-  std::sort(wall.begin(), wall.end());
-  const double hz_median = 1 / wall[wall.size() / 2], hz_best = 1 / wall[0];
-  const double hz_cpu = threads / cpu_best;  // if each thread had its core to itself
+  const std::vector<Pose> pf(poses.begin(), poses.begin() + std::min<size_t>(set.particles, poses.size()));
+  const Update ub = filter_update(before, pf, beams, threads, repeats);
+  const Update uf = filter_update(fast, pf, beams, threads, repeats);
   const double seed_update_s = pf.size() * beams.size() / (s2.wall * 1e6);
-  std::printf(
-      "\nfilter update, %zu poses x %d rays on %d threads: %.1f Hz median, %.1f Hz best, %.1f Hz CPU-bound"
-      " (seed %.2f Hz)\n",
-      pf.size(), beams_n, threads, hz_median, hz_best, hz_cpu, 1 / seed_update_s);
-  std::printf("fast structure: %.2f MiB (%zu cells of %.2g m, %zu list entries, %.1f per cell)\n",
+  std::printf("\nfilter update, %zu poses x %zu rays on %d threads (seed %.2f Hz):\n", pf.size(), beams.size(),
+              threads, 1 / seed_update_s);
+  std::printf("  before %7.1f Hz median, %7.1f Hz best, %7.1f Hz CPU-bound\n", ub.hz_median, ub.hz_best, ub.hz_cpu);
+  std::printf("  fast   %7.1f Hz median, %7.1f Hz best, %7.1f Hz CPU-bound  (%.1f x before, CPU-bound)\n",
+              uf.hz_median, uf.hz_best, uf.hz_cpu, uf.hz_cpu / ub.hz_cpu);
+  std::printf("fast structure: %.2f MiB (%zu cells of %.2g m, %zu list entries, %.1f per cell); before %.2f MiB\n\n",
               mib(fast.memory_bytes()), fast.candidates().cells(), fast.candidates().cell(),
               fast.candidates().entries(),
-              static_cast<double>(fast.candidates().entries()) / fast.candidates().cells());
+              static_cast<double>(fast.candidates().entries()) / fast.candidates().cells(), mib(before.memory_bytes()));
+  return {f2, b2, threads * f1.cpu, threads * b1.cpu, uf, ub, mib(fast.memory_bytes())};
+}
 
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"bench-raycast: the seed's ray casting, the first sweep and the fast caster, same run"};
+  std::vector<std::string> maps = {real_map_path("GDC1.vectormap.txt"), real_map_path("UT_Campus.vectormap.txt")};
+  Settings set;
+  int beams_n = 131;
+  double fov_deg = 180;
+  app.add_option("--map", maps, "AMRL vector maps (.vectormap.txt) or seed maps (.map); default GDC1 and the campus");
+  app.add_option("--laser-height", set.opt.laser_height, "hL, metres")->capture_default_str();
+  app.add_option("--rmax", set.opt.rmax, "metres")->capture_default_str();
+  app.add_option("--beams", beams_n, "NL")->capture_default_str();
+  app.add_option("--fov", fov_deg, "degrees")->capture_default_str();
+  app.add_option("--particles", set.particles, "NP of the filter update")->capture_default_str();
+  app.add_option("--poses", set.poses_fast, "random poses for the fast casters")->capture_default_str();
+  app.add_option("--seed-poses", set.poses_seed, "random poses for the seed's method")->capture_default_str();
+  app.add_option("--repeats", set.repeats, "runs per figure (best kept)")->capture_default_str();
+  app.add_option("--threads", set.threads, "threads of the multi-threaded figures")->capture_default_str();
+  app.add_option("--cell", set.cell, "cell of the fast caster's candidate grid, metres (0: by density)")
+      ->capture_default_str();
+  app.add_option("--occluders", set.occluders, "walls tried as occluders per cell (0: no culling)")
+      ->capture_default_str();
+  app.add_flag("--alternatives", set.alternatives, "also time the other designs and cell sizes tried");
+  CLI11_PARSE(app, argc, argv);
+  set.beams = evenly_spread_angles(beams_n, fov_deg * kPi / 180);
+  std::printf("%d beams over %.0f deg; %u hardware threads\n\n", beams_n, fov_deg, std::thread::hardware_concurrency());
+
+  std::vector<MapResult> results;
+  for (const std::string& m : maps) results.push_back(bench_map(m, set));
+  std::printf("summary, 2 threads: M rays/s wall (CPU-bound), filter update Hz CPU-bound\n");
+  for (size_t i = 0; i < maps.size(); ++i) {
+    const MapResult& r = results[i];
+    std::printf("  %-50s fast %6.1f M (%6.1f M) vs before %6.1f M (%6.1f M): %.1f x; update %.0f Hz vs %.0f Hz; %.2f MiB\n",
+                maps[i].c_str(), r.fast2.wall, r.fast_cpu, r.before2.wall, r.before_cpu, r.fast_cpu / r.before_cpu,
+                r.fast_update.hz_cpu, r.before_update.hz_cpu, r.fast_mib);
+  }
+  const MapResult& dense = results[0];
   std::printf(
-      "\ngoal: >= 40 M rays/s on %d threads: %s (%.1f M wall, %.1f M CPU-bound); >= 150x seed: %s (%.1f x);"
-      " update >= 50 Hz (best run): %s; < 256 MiB: %s\n",
-      threads, f2.wall >= 40 ? "yes" : "no", f2.wall, threads * f1.cpu, f2.wall / s2.wall >= 150 ? "yes" : "no",
-      f2.wall / s2.wall, hz_best >= 50 ? "yes" : "no", mib(fast.memory_bytes()) < 256 ? "yes" : "no");
+      "goal on %s: >= 150 M rays/s on %d threads: %s (%.1f M wall, %.1f M CPU-bound); update >= 200 Hz: %s (%.0f Hz"
+      " best, %.0f Hz CPU-bound); < 64 MiB: %s\n",
+      maps[0].c_str(), set.threads, dense.fast_cpu >= 150 ? "yes" : "no", dense.fast2.wall, dense.fast_cpu,
+      dense.fast_update.hz_cpu >= 200 ? "yes" : "no", dense.fast_update.hz_best, dense.fast_update.hz_cpu,
+      dense.fast_mib < 64 ? "yes" : "no");
   return 0;
 }

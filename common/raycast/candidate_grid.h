@@ -1,8 +1,9 @@
 #pragma once
 // For each cell of a uniform grid, every obstacle that can stop a laser ray of length
 // rmax cast from anywhere in the cell (its "potentially visible set"): the walls whose
-// distance to the cell is at most rmax, and the stairs and ramps whose bounding box is.
-// One list read per scan replaces a walk through many cells per ray, which is what
+// distance to the cell is at most rmax, and the stairs and ramps whose bounding box is;
+// optionally less the walls another wall of the list hides from the whole cell
+// (occlusion.h), which can never end a ray first. One list read per scan replaces a walk through many cells per ray, which is what
 // costs on random poses: the list is one or two cache lines, the walls it names are a
 // small array that stays in cache.
 //
@@ -28,10 +29,17 @@ class CandidateGrid {
   struct Candidate {
     uint32_t id;
     float nearest;  // metres: no point of the cell is nearer to it (rounded down)
+    // Every direction from the cell to it lies in the pseudo-angle arc (beam_order.h)
+    // [arc_lo, arc_lo + arc_width] modulo 4, widened beyond the sweep's slack; a width
+    // of 4 (stairs, ramps, walls touching the cell) is every direction.
+    float arc_lo;
+    float arc_width;
   };
 
-  // cell: side in metres, doubled until the lists fit in max_bytes.
-  CandidateGrid(const LaserObstacles& obstacles, double cell, double rmax, size_t max_bytes);
+  // cell: side in metres, doubled until the lists fit in max_bytes. occluders > 0: each
+  // list leaves out the walls that one of its `occluders` nearest kept walls hides from
+  // the whole cell (occlusion.h); 0 keeps every wall within reach.
+  CandidateGrid(const LaserObstacles& obstacles, double cell, double rmax, size_t max_bytes, size_t occluders = 0);
 
   // The candidates for a ray from p (empty outside the grid: nothing is within rmax).
   std::span<const Candidate> near(Point p) const {
@@ -47,6 +55,8 @@ class CandidateGrid {
   size_t memory_bytes() const;
   // Bytes the lists would take with this cell size (what the constructor checks).
   static size_t estimate_bytes(const LaserObstacles& obstacles, double cell, double rmax);
+  // The entries per cell that estimate implies (an upper bound of the mean list).
+  static double estimate_mean_list(const LaserObstacles& obstacles, double cell, double rmax);
 
  private:
   GridFrame frame_;

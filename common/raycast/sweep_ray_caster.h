@@ -1,15 +1,17 @@
 #pragma once
 // The fast RayCaster: a scan reads the candidate list of its origin's cell
-// (common/raycast/candidate_grid.h: every wall, stair and ramp within rmax of the cell) and
-// sweeps it wall by wall: each wall is tested, with the shared exact test
-// (common/raycast/ray_segment.h), only against the beams inside the angle it subtends from the
-// origin, and only where it is nearer than the range found so far for that beam.
-// Stairs and ramps are judged as a whole against every beam (common/raycast/ray_rules.h).
+// (common/raycast/candidate_grid.h: every wall, stair and ramp within rmax of the cell,
+// less the walls a nearer wall hides from the whole cell) and sweeps it wall by wall:
+// each wall is tested, with the shared exact test (common/raycast/ray_segment.h), only
+// against the beams inside the angle it subtends from the origin, a run of consecutive
+// beams tested in one vectorised loop (common/raycast/sweep_kernels.h). Stairs and ramps
+// are judged as a whole (common/raycast/ray_rules.h).
 //
 // This is the seed's idea (seed 000 section 4.1: cull obstacles against the scanner's
-// circle once per scan, then test the rest) with the culling precomputed per cell and
-// refined per beam. Results equal SeedRayCaster's: the same test on a superset of the
-// walls that can be hit (tests/common/raycast/ray_caster_equivalence_test.cpp).
+// circle once per scan, then test the rest) with the culling precomputed per cell,
+// occlusion included, and refined per beam. Results equal SeedRayCaster's: the same test
+// on a superset of the walls that can be hit first
+// (tests/common/raycast/ray_caster_equivalence_test.cpp; docs/ray-casting.md).
 //
 // Memory grows with rmax^2 times the walls' density; the cell size is doubled until
 // the lists fit in SweepOptions::max_bytes. make_fast_ray_caster() picks GridRayCaster
@@ -24,9 +26,19 @@
 
 namespace fleetmap {
 
+// How a scan is swept over its list (common/raycast/sweep_kernels.h).
+enum class SweepKernel { batched, per_beam };
+
 struct SweepOptions {
-  double cell = 4.0;             // metres (bench-raycast compares sizes)
+  // Metres; 0 picks by density: kDenseCell where the kSparseCell lists would average
+  // more than kDenseList entries (a building floor), else kSparseCell (a campus, where
+  // small cells only cost memory and build time). bench-raycast compares sizes.
+  double cell = 0;
+  static constexpr double kDenseCell = 1.0, kSparseCell = 4.0, kDenseList = 32;
   size_t max_bytes = 64u << 20;  // budget of the candidate lists
+  SweepKernel kernel = SweepKernel::batched;
+  // Walls of a cell's list tried as occluders of the farther ones (0: no culling).
+  size_t occluders = 32;
 };
 
 class SweepRayCaster : public RayCaster {
@@ -43,6 +55,7 @@ class SweepRayCaster : public RayCaster {
 
  private:
   RayCasterOptions options_;
+  SweepKernel kernel_;
   LaserObstacles obstacles_;
   CandidateGrid candidates_;
 };

@@ -118,6 +118,15 @@ Candidate sweep(double cell) {
             return std::make_unique<SweepRayCaster>(m, o, SweepOptions{cell});
           }};
 }
+Candidate sweep(const std::string& name, SweepOptions o) {
+  return {name, [o](const Map& m, RayCasterOptions opt) { return std::make_unique<SweepRayCaster>(m, opt, o); }};
+}
+SweepOptions sweep_options(double cell, size_t occluders, SweepKernel kernel) {
+  SweepOptions o{cell};
+  o.occluders = occluders;
+  o.kernel = kernel;
+  return o;
+}
 Candidate grid(double cell, bool skip) {
   return {"grid " + std::to_string(cell).substr(0, 4) + " m" + (skip ? "" : " no skip"),
           [cell, skip](const Map& m, RayCasterOptions o) {
@@ -217,6 +226,18 @@ TEST(RayCasterEquivalence, OtherCellSizes) {
   const std::vector<Candidate> others = {grid(1, false), grid(0.25, true), grid(4, true), sweep(0.25), sweep(4)};
   expect_equivalent("UT_Campus (varied)", varied(campus(), 3), 0.3, others, kRays / 5, 0.03);
   expect_equivalent("example-campus", read_seed_file(kExample), 0.3, others, kRays / 5, 0.2);
+}
+
+// The dense floor, where occlusion culling drops the most walls, through each sweep
+// kernel with and without culling and with fewer or more occluders tried (cells of 2 and
+// 4 m: their lists build quickly).
+TEST(RayCasterEquivalence, SweepKernelsAndCulling) {
+  const std::vector<Candidate> sweeps = {
+      sweep("per beam 2 m, 32", sweep_options(2, 32, SweepKernel::per_beam)),
+      sweep("batched 4 m, no cull", sweep_options(4, 0, SweepKernel::batched)),
+      sweep("batched 4 m, 8", sweep_options(4, 8, SweepKernel::batched)),
+      sweep("batched 2 m, 64", sweep_options(2, 64, SweepKernel::batched))};
+  expect_equivalent("GDC1 (varied)", varied(gdc1(), 4), 0.3, sweeps, kRays / 10, 0.2);
 }
 
 }  // namespace
