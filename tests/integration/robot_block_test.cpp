@@ -58,6 +58,11 @@ TEST(RobotBlock, RobotBlockingAnotherRobotIsEndedAfterTheBound) {
   write_file(temp_path(log_name), "");
   auto server = std::make_unique<ServerProcess>("--workers 2 --robot-block-ms 600", log_name);
 
+  // B registers first (a request before Ready is refused).
+  SqlRobot b(b_name, b_pw);
+  b.send("Ready", R"({"magic": 2})");
+  ASSERT_EQ(b.receive(2, seconds(10)).size(), 2u) << "B got no Start + SetMap";
+
   // A: one row inserted at once (the AUTO-INC lock taken), then 20 s of sleep on the second.
   SqlRobot a(a_name, a_pw);
   std::atomic<bool> a_ended{false};
@@ -76,7 +81,6 @@ TEST(RobotBlock, RobotBlockingAnotherRobotIsEndedAfterTheBound) {
   });
   std::this_thread::sleep_for(milliseconds(300));
 
-  SqlRobot b(b_name, b_pw);
   const auto t0 = Clock::now();
   const auto gps = b.send("SendGPS", R"({"lat": 41.4, "lon": 2.1})");
   const double b_wait_s = std::chrono::duration<double>(Clock::now() - t0).count();
