@@ -26,16 +26,18 @@
 //   report  prints the tables of a results file (JSON lines written by the other modes).
 //
 // Workloads (--workload): fleet (each robot: SendPos at 3 Hz, Alive every Alive period,
-// GetMap 100 m x 100 m around its pose every 5 s, SendGPS every 2 s, phases random), or
-// lone (one robot, SendGPS, the next 100-300 ms after the answer).
+// GetMap 100 m x 100 m around its pose every 5 s, SendGPS every 2 s, phases random),
+// quiet (idle robots: Alive only, and the idle polls of the wait policy: what a parked
+// fleet costs the database), or lone (one robot, SendGPS, the next 100-300 ms after the
+// answer).
 //
 // What is measured:
 //   * answer latency: from the start of the robot's INSERT INTO rr to the end of the
-//     SELECT on sa_mine that returned the answer. Robots poll sa_mine at once after an
-//     answered request and then every --answer-poll-ms while an answer is due (the loop of
-//     client/robot_client.cpp, which polls every 2 ms), backing off to a tenth of the time
-//     already waited (--poll-backoff) so that a slow server does not cause a poll storm; the
-//     figure includes up to one poll interval (<= 1 ms, or <= 10 % beyond 10 ms).
+//     SELECT on sa_mine that returned the answer. Robots poll sa_mine on the schedule of
+//     RobotClient, the same WaitPolicy object (protocol/wait_policy.h; --wait-* options,
+//     defaults the policy's): first_poll_ms after an answered request's INSERT, then gaps of
+//     backoff x the time waited within [min_ms, max_ms], and every idle_ms when nothing is
+//     due; the figure includes up to one poll gap.
 //   * processing lag (SendPos, Alive and the others): a monitor connection (server account)
 //     reads the ids present in rr every --monitor-ms; a request whose INSERT had committed
 //     before a snapshot and that is absent from it was taken and its deletion committed
@@ -83,6 +85,7 @@
 #include "protocol/map_store.h"
 #include "protocol/params.h"
 #include "protocol/sql_util.h"
+#include "protocol/wait_policy.h"
 
 namespace {
 
@@ -105,7 +108,8 @@ struct Options {
   int robots = 200, first = 1, threads = 8;
   std::string prefix = "lg", password_dir;
   double seconds = 20, warmup = 3, drain = 5;
-  double answer_poll_ms = 1, poll_backoff = 0.1, idle_poll_ms = 1000, monitor_ms = 2;
+  fleetmap::WaitPolicy wait;  // RobotClient's, by default its defaults
+  double monitor_ms = 2;
   double pos_hz = 3, map_period_s = 5, gps_period_s = 2, alive_period_s = 1;
   double window_m = 100;
   std::string map = "UT_Campus";
@@ -536,7 +540,7 @@ void RobotThread::after_insert(Robot& r, TimePoint now) {
   }
   if (expected_answers(k) > 0) {
     r.awaiting[id] = {k, r.t0, expected_answers(k), win};
-    r.next_poll = now;  // poll at once, as client/robot_client.cpp does
+    r.next_poll = now + from_ms(o_.wait.first_poll_ms);  // as RobotClient does
   }
 }
 
@@ -596,13 +600,11 @@ void RobotThread::after_store(Robot& r, TimePoint now) {
   }
   mysql_free_result(r.res);
   r.res = nullptr;
-  // Poll again after answer-poll-ms, or after a tenth of the time the oldest answer has been
-  // due (--poll-backoff): the error stays small against the latency, and a slow server does
-  // not turn into a storm of polls that slows the database for everyone.
-  double next_ms = o_.answer_poll_ms;
-  for (const auto& [id, w] : r.awaiting) next_ms = std::max(next_ms, o_.poll_backoff * ms_between(w.t0, now));
-  r.next_poll = now + from_ms(next_ms);
-  r.next_idle_poll = now + from_ms(o_.idle_poll_ms);
+  // The next poll by the wait policy, from the oldest answer due (as RobotClient).
+  double waited_ms = 0;
+  for (const auto& [id, w] : r.awaiting) waited_ms = std::max(waited_ms, ms_between(w.t0, now));
+  r.next_poll = now + from_ms(o_.wait.answer_gap_ms(waited_ms));
+  r.next_idle_poll = now + from_ms(o_.wait.idle_ms);
   if (!del.empty()) {
     r.sql = "DELETE FROM sa_mine WHERE id IN (" + del + ")";
     start_query(r, Robot::kDelete);
@@ -617,7 +619,7 @@ void RobotThread::schedule(Robot& r, TimePoint now) {
     for (int k = 0; k < 4; ++k) r.next[k] = sh_.t_go + from_ms(1000 * periods[k] * u(r.rng));
     r.lone_left = o_.lone_count;
     r.lone_next = sh_.t_go;
-    r.next_idle_poll = sh_.t_go + from_ms(o_.idle_poll_ms * u(r.rng));
+    r.next_idle_poll = sh_.t_go + from_ms(o_.wait.idle_ms * u(r.rng));
   }
   if (now >= sh_.m_end) return;
   if (o_.workload == "lone") {
@@ -631,7 +633,7 @@ void RobotThread::schedule(Robot& r, TimePoint now) {
   }
   const double periods[4] = {1.0 / o_.pos_hz, r.alive_s, o_.map_period_s, o_.gps_period_s};
   for (int k = 0; k < 4; ++k)
-    while (r.next[k] <= now && r.next[k] < sh_.m_end) {
+    while ((o_.workload != "quiet" || k == kAlive) && r.next[k] <= now && r.next[k] < sh_.m_end) {
       r.queue.push_back({static_cast<Kind>(k), r.next[k]});
       r.next[k] += from_ms(1000 * periods[k]);
     }
@@ -669,7 +671,7 @@ void RobotThread::act(Robot& r, TimePoint now) {
   }
   const bool poll_answer = !r.awaiting.empty() && now >= r.next_poll;
   const bool poll_idle =
-      sh_.go && o_.idle_poll_ms > 0 && now >= r.next_idle_poll && now < sh_.m_end && o_.workload == "fleet";
+      sh_.go && o_.wait.idle_ms > 0 && now >= r.next_idle_poll && now < sh_.m_end && o_.workload != "lone";
   if (poll_answer || poll_idle) {
     r.sql = "SELECT id, request_id, op, params, payload FROM sa_mine WHERE id > " + std::to_string(r.last_answer) +
             " ORDER BY id LIMIT 100";
@@ -720,9 +722,10 @@ void RobotThread::run() {
         if (!r->awaiting.empty()) wake = std::min(wake, r->next_poll);
         if (!go_seen_ && r->registered) wake = std::min(wake, r->setup_alive);
         if (go_seen_) {
-          if (o_.workload == "fleet") {
-            for (const TimePoint& t : r->next) wake = std::min(wake, t);
-            if (o_.idle_poll_ms > 0) wake = std::min(wake, r->next_idle_poll);
+          if (o_.workload != "lone") {
+            for (int k = 0; k < 4; ++k)
+              if (o_.workload != "quiet" || k == kAlive) wake = std::min(wake, r->next[k]);
+            if (o_.wait.idle_ms > 0) wake = std::min(wake, r->next_idle_poll);
           } else if (r->lone_left > 0) {
             wake = std::min(wake, r->lone_next);
           }
@@ -1186,11 +1189,11 @@ void print_report(const std::string& file, const std::string& phase) {
     for (const Json& r : floors)
       if (r["workload"] == "fleet") fleet.push_back(r);
     fleet_table(rows, fleet);
-    const double poll = floors.empty() ? NAN : num(floors[0], {"answer_poll_ms"});
+    const double poll = floors.empty() ? NAN : num(floors[0], {"wait", "min_ms"});
     const double mon = floors.empty() ? NAN : num(floors[0], {"monitor_ms"});
     std::printf(
-        "(ms. Answer: INSERT start -> answer read; robots poll sa_mine every %g ms while an answer is due,\n"
-        " then every 10%% of the wait. SendPos lag: INSERT start -> rr row gone, monitor snapshot of rr every %g ms\n"
+        "(ms. Answer: INSERT start -> answer read; robots poll sa_mine every %g ms or more while an answer is\n"
+        " due (the wait policy, --wait-*). SendPos lag: INSERT start -> rr row gone, monitor snapshot of rr every %g ms\n"
         " (+-%g ms). CPU in %% of one core: srv = fleetmap-server (or the answering loop for floor and lean),\n"
         " db = mariadbd, rob = the robots (this program), mach = whole machine incl. other users, of 200.)\n",
         poll, mon, mon / 2);
@@ -1249,6 +1252,36 @@ void print_report(const std::string& file, const std::string& phase) {
                   b.first ? (std::to_string(b.first) + " robots").c_str() : "none",
                   b.second ? (" (p99 > 20 ms at " + std::to_string(b.second) + ")").c_str() : "");
   }
+  if (all || phase == "policy") {
+    // The robots' wait policy (protocol/wait_policy.h), one run each on the same server:
+    // fleet rows give the answer latency, quiet rows (Alive and idle polls only) what an
+    // idle robot costs mariadbd; the quiet row with idle polling off is their baseline.
+    std::printf("\n== 5. Robot waiting policy: answered latency (fleet) and mariadbd CPU per idle robot (quiet)\n");
+    std::printf("%-24s | %-27s | %17s | %6s %12s %12s %9s\n", "run", "first/min/max/backoff/idle", "answered p50/p99",
+                "db %", "db %/robot", "polls/robot", "stmts/s");
+    double quiet_base = NAN;
+    for (const Json& r : of("policy"))
+      if (r.value("workload", std::string()) == "quiet" && num(r, {"wait", "idle_ms"}) == 0)
+        quiet_base = num(r, {"cpu", "db_pct"});
+    for (const Json& r : of("policy")) {
+      const bool quiet = r.value("workload", std::string()) == "quiet";
+      const double n = r.value("robots", 1);
+      const double db = num(r, {"cpu", "db_pct"});
+      char wait[160];
+      std::snprintf(wait, sizeof wait, "%g/%g/%g/%g/%g", num(r, {"wait", "first_poll_ms"}), num(r, {"wait", "min_ms"}),
+                    num(r, {"wait", "max_ms"}), num(r, {"wait", "backoff"}), num(r, {"wait", "idle_ms"}));
+      const std::string lat = quiet ? "-" : f2(num(r, {"answer_ms", "answered", "p50"})) + " / " +
+                                                f2(num(r, {"answer_ms", "answered", "p99"}));
+      const std::string per = f2(db / n, "%.3f") +
+                              (quiet && !std::isnan(quiet_base) ? " (+" + f2((db - quiet_base) / n, "%.3f") + ")" : "");
+      std::printf("%-24s | %-27s | %17s | %6s %12s %12s %9s\n", r.value("label", std::string()).c_str(), wait,
+                  lat.c_str(), f2(db, "%.0f").c_str(), per.c_str(),
+                  f2(num(r, {"robot_polls"}) / n, "%.0f").c_str(),
+                  f2(num(r, {"cpu", "db_per_s", "Questions"}), "%.0f").c_str());
+    }
+    std::printf("(db %%/robot: mariadbd %% of one core / robots; in brackets, above the quiet run without idle polls.\n"
+                " polls/robot: SELECTs on sa_mine per robot over the whole run, warm-up and drain included.)\n");
+  }
 }
 
 }  // namespace
@@ -1264,8 +1297,8 @@ int main(int argc, char** argv) {
   app.add_option("--mode", o.mode, "floor, server, lean, idle, report")
       ->check(CLI::IsMember({"floor", "server", "lean", "idle", "report"}))
       ->capture_default_str();
-  app.add_option("--workload", o.workload, "fleet or lone")
-      ->check(CLI::IsMember({"fleet", "lone"}))
+  app.add_option("--workload", o.workload, "fleet, quiet or lone")
+      ->check(CLI::IsMember({"fleet", "quiet", "lone"}))
       ->capture_default_str();
   app.add_option("--robots", o.robots, "robots (accounts PREFIX0001...)")->capture_default_str();
   app.add_option("--first", o.first, "number of the first robot account")->capture_default_str();
@@ -1276,12 +1309,15 @@ int main(int argc, char** argv) {
   app.add_option("--warmup", o.warmup, "traffic before the window, s")->capture_default_str();
   app.add_option("--drain", o.drain, "after the window: wait this long for outstanding answers, s")
       ->capture_default_str();
-  app.add_option("--answer-poll-ms", o.answer_poll_ms, "robots poll sa_mine this often while an answer is due")
+  // The robots' wait policy: RobotClient's (protocol/wait_policy.h), field by field.
+  app.add_option("--wait-first-poll-ms", o.wait.first_poll_ms, "first poll this long after an answered request's INSERT")
       ->capture_default_str();
-  app.add_option("--poll-backoff", o.poll_backoff,
-                 "while an answer is due, poll no more often than this fraction of the time it has waited (0: fixed)")
+  app.add_option("--wait-min-ms", o.wait.min_ms, "while an answer is due: shortest gap between polls")
       ->capture_default_str();
-  app.add_option("--idle-poll-ms", o.idle_poll_ms, "robots poll sa_mine this often otherwise (pushed ops); 0: never")
+  app.add_option("--wait-max-ms", o.wait.max_ms, "while an answer is due: longest gap")->capture_default_str();
+  app.add_option("--wait-backoff", o.wait.backoff, "while an answer is due: gap = this x time waited (0: fixed)")
+      ->capture_default_str();
+  app.add_option("--wait-idle-ms", o.wait.idle_ms, "nothing due: poll this often (pushed ops); 0: never")
       ->capture_default_str();
   app.add_option("--monitor-ms", o.monitor_ms, "rr snapshot period for the processing lag; 0: off")
       ->capture_default_str();
@@ -1306,7 +1342,7 @@ int main(int argc, char** argv) {
   app.add_option("--server-procs", o.server_procs, "recorded: server processes");
   app.add_option("--workers", o.workers, "recorded: workers per server process");
   app.add_option("--poll-max-ms", o.poll_max_ms, "recorded: the servers' --poll-max-ms");
-  app.add_option("--phase", o.phase, "recorded: table this run belongs to (floor, server, idle, scaling)");
+  app.add_option("--phase", o.phase, "recorded: table this run belongs to (floor, server, idle, scaling, policy)");
   app.add_option("--label", o.label, "recorded: row label");
   app.add_option("--results", o.results, "append the run's figures as one JSON line to this file");
   app.add_option("--config", o.config, "config file (default: FLEETMAP_CONFIG, FLEETMAP_HOME/fleetmap.conf, ...)");
@@ -1364,8 +1400,8 @@ int main(int argc, char** argv) {
     if (o.server_procs) out["server_procs"] = o.server_procs;
     if (o.workers) out["workers"] = o.workers;
     if (o.poll_max_ms >= 0) out["poll_max_ms"] = o.poll_max_ms;
-    out["answer_poll_ms"] = o.answer_poll_ms;
-    out["poll_backoff"] = o.poll_backoff;
+    out["wait"] = {{"first_poll_ms", o.wait.first_poll_ms}, {"min_ms", o.wait.min_ms}, {"max_ms", o.wait.max_ms},
+                   {"backoff", o.wait.backoff}, {"idle_ms", o.wait.idle_ms}};
     out["monitor_ms"] = o.monitor_ms;
 
     if (o.mode == "idle") {
@@ -1448,7 +1484,7 @@ int main(int argc, char** argv) {
 
     Snapshot a, b;
     bool sampled = false;
-    if (o.workload == "fleet") {
+    if (o.workload != "lone") {
       std::this_thread::sleep_until(sh.m_start);
       a = snapshot(o, status.get());
       std::this_thread::sleep_until(sh.m_end);
@@ -1472,7 +1508,7 @@ int main(int argc, char** argv) {
       handled += answerer_handled[i];
       empty += answerer_empty[i];
     }
-    const double window_s = o.workload == "fleet" ? o.seconds : ms_between(sh.m_start, b.t) / 1000;
+    const double window_s = o.workload != "lone" ? o.seconds : ms_between(sh.m_start, b.t) / 1000;
     out["window_s"] = window_s;
     out["cpu"] = cpu_between(a, b, ans_cpu);
     uint64_t sent = 0, unanswered = 0;

@@ -19,6 +19,17 @@ struct RobotClient::AliveTimer {
 
 namespace {
 
+// SPEC 5.2: every request but Alive, SendPos and OpAck has an answer.
+bool has_answer(RequestOp op) { return op != RequestOp::Alive && op != RequestOp::SendPos && op != RequestOp::OpAck; }
+
+// An answer due this long is given up for polling purposes (the server may have refused
+// it silently or been replaced); the schedule falls back to idle.
+constexpr std::chrono::seconds kForgetDue{60};
+
+std::chrono::steady_clock::duration from_ms(double ms) {
+  return std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double, std::milli>(ms));
+}
+
 bool connection_error(const mysqlpp::Exception& e) {
   if (const auto* bq = dynamic_cast<const mysqlpp::BadQuery*>(&e)) return bq->errnum() >= 2000 && bq->errnum() < 3000;
   return dynamic_cast<const mysqlpp::ConnectionFailed*>(&e) != nullptr;
@@ -26,9 +37,23 @@ bool connection_error(const mysqlpp::Exception& e) {
 
 }  // namespace
 
-RobotClient::RobotClient(DbSettings settings, std::chrono::seconds reconnect_for)
-    : settings_(std::move(settings)), reconnect_for_(reconnect_for) {
+RobotClient::RobotClient(DbSettings settings, std::chrono::seconds reconnect_for, WaitPolicy wait)
+    : settings_(std::move(settings)), reconnect_for_(reconnect_for), wait_(wait) {
   conn_ = connect(settings_);
+}
+
+void RobotClient::set_wait_policy(const WaitPolicy& w) {
+  std::lock_guard lock(mutex_);
+  wait_ = w;
+}
+
+RobotClient::Clock::time_point RobotClient::next_poll() const {
+  if (due_.empty()) return last_poll_ + from_ms(wait_.idle_ms);
+  Clock::time_point oldest = Clock::time_point::max();
+  for (const auto& [id, at] : due_) oldest = std::min(oldest, at);
+  const auto now = Clock::now();
+  const double waited_ms = std::chrono::duration<double, std::milli>(now - oldest).count();
+  return std::max(oldest + from_ms(wait_.first_poll_ms), last_poll_ + from_ms(wait_.answer_gap_ms(waited_ms)));
 }
 
 RobotClient::~RobotClient() { stop_alive(); }
@@ -61,13 +86,21 @@ auto RobotClient::with_connection(F&& f) -> decltype(f(std::declval<RobotChannel
 }
 
 unsigned long long RobotClient::send(RequestOp op, const Json& params, const std::optional<std::string>& payload) {
-  return with_connection([&](RobotChannel& ch) { return ch.send(op, params, payload, robot_id_); });
+  std::lock_guard lock(mutex_);
+  const auto at = Clock::now();
+  const unsigned long long id = with_connection([&](RobotChannel& ch) { return ch.send(op, params, payload, robot_id_); });
+  if (has_answer(op)) due_[id] = at;
+  return id;
 }
 
 void RobotClient::fetch() {
+  last_poll_ = Clock::now();
+  ++polls_;
+  std::erase_if(due_, [&](const auto& d) { return last_poll_ - d.second > kForgetDue; });
   with_connection([&](RobotChannel& ch) {
     for (ReceivedAnswer& a : ch.answers(last_answer_, 1000)) {
       last_answer_ = a.id;
+      if (a.request_id) due_.erase(*a.request_id);
       ch.remove(a.id);
       const std::optional<AnswerOp> op = parse_answer_op(a.op);
       // Pushed operations are acknowledged at once: the server records that we took them.
@@ -81,7 +114,7 @@ void RobotClient::fetch() {
 
 std::vector<ReceivedAnswer> RobotClient::receive() {
   std::lock_guard lock(mutex_);
-  fetch();
+  if (Clock::now() >= next_poll()) fetch();
   std::vector<ReceivedAnswer> out(std::make_move_iterator(inbox_.begin()), std::make_move_iterator(inbox_.end()));
   inbox_.clear();
   return out;
@@ -92,9 +125,10 @@ std::vector<ReceivedAnswer> RobotClient::await(unsigned long long request_id, si
   const auto until = Clock::now() + timeout;
   std::vector<ReceivedAnswer> got;
   for (;;) {
+    Clock::time_point poll_at;
     {
       std::lock_guard lock(mutex_);
-      fetch();
+      if (Clock::now() >= next_poll()) fetch();
       for (auto it = inbox_.begin(); it != inbox_.end() && got.size() < n;) {
         if (it->request_id == request_id) {
           got.push_back(std::move(*it));
@@ -103,12 +137,15 @@ std::vector<ReceivedAnswer> RobotClient::await(unsigned long long request_id, si
           ++it;
         }
       }
+      // Still waiting for this request's answers (Ready has two): keep it due.
+      if (got.size() < n && !due_.count(request_id)) due_[request_id] = last_poll_;
+      poll_at = next_poll();
     }
     if (got.size() >= n) return got;
     if (Clock::now() > until)
       throw RobotClientError("no answer to request " + std::to_string(request_id) + " within " +
                              std::to_string(timeout.count()) + " ms (is fleetmap-server running?)");
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    std::this_thread::sleep_until(std::min(poll_at, until + std::chrono::milliseconds(1)));
   }
 }
 

@@ -8,9 +8,16 @@
 // reconnecting, so nothing the robot sent is lost; if the INSERT had in fact committed
 // before the connection broke, the server sees it twice (at-least-once). Answers are
 // handed over exactly once (ids above the last one handed over).
+//
+// Waiting (protocol/wait_policy.h): sa_mine is polled on the WaitPolicy's schedule, by
+// await() and by receive() alike: first_poll_ms after a request that has answers, then
+// at gaps growing with the wait while one is due, every idle_ms otherwise. A receive()
+// called sooner returns what the last poll brought, without a statement: a control loop
+// may call it every cycle without loading the fleet's shared database.
 #include <atomic>
 #include <chrono>
 #include <deque>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -24,6 +31,7 @@
 #include "protocol/db_settings.h"
 #include "protocol/params.h"
 #include "protocol/robot_channel.h"
+#include "protocol/wait_policy.h"
 
 namespace fleetmap {
 
@@ -43,7 +51,8 @@ class RobotClient {
  public:
   using Clock = std::chrono::steady_clock;
 
-  explicit RobotClient(DbSettings settings, std::chrono::seconds reconnect_for = std::chrono::seconds(60));
+  explicit RobotClient(DbSettings settings, std::chrono::seconds reconnect_for = std::chrono::seconds(60),
+                       WaitPolicy wait = {});
   ~RobotClient();
 
   // Ready, then Start (same magic) and SetMap. Throws RobotClientError on Error or time-out.
@@ -65,6 +74,10 @@ class RobotClient {
   void start_alive(std::chrono::milliseconds period);
   void stop_alive();
 
+  const WaitPolicy& wait_policy() const { return wait_; }
+  void set_wait_policy(const WaitPolicy& w);
+  size_t polls() const { return polls_; }  // SELECTs on sa_mine so far
+
   std::optional<unsigned> robot_id() const { return robot_id_; }
   size_t reconnects() const { return reconnects_; }
 
@@ -72,6 +85,7 @@ class RobotClient {
   template <typename F>
   auto with_connection(F&& f) -> decltype(f(std::declval<RobotChannel&>()));
   void fetch();  // sa_mine -> inbox_
+  Clock::time_point next_poll() const;  // by the wait policy; under mutex_
 
   DbSettings settings_;
   std::chrono::seconds reconnect_for_;
@@ -81,6 +95,10 @@ class RobotClient {
   unsigned long long last_answer_ = 0;
   std::optional<unsigned> robot_id_;
   std::atomic<size_t> reconnects_{0};
+  WaitPolicy wait_;
+  std::map<unsigned long long, Clock::time_point> due_;  // requests sent whose answers are due -> sent at
+  Clock::time_point last_poll_{};
+  std::atomic<size_t> polls_{0};
 
   struct AliveTimer;
   std::unique_ptr<AliveTimer> alive_;

@@ -43,13 +43,22 @@ Request read_request(const mysqlpp::Row& r) {
 std::vector<Request> RequestQueue::requests_of(const std::vector<std::string>& accounts, size_t per_account,
                                                size_t total) {
   if (accounts.empty()) return {};
+  mysqlpp::Query q = c_.query(requests_sql(accounts, total));
+  return requests_from(q.store(), per_account);
+}
+
+std::string RequestQueue::requests_sql(const std::vector<std::string>& accounts, size_t total) {
   mysqlpp::Query q = c_.query();
   q << "SELECT " << kRequestColumns << " FROM rr WHERE db_user IN (";
   for (size_t i = 0; i < accounts.size(); ++i) q << (i ? "," : "") << mysqlpp::quote << accounts[i];
   q << ") ORDER BY id LIMIT " << total;
+  return q.str();
+}
+
+std::vector<Request> RequestQueue::requests_from(const mysqlpp::StoreQueryResult& res, size_t per_account) {
   std::vector<Request> out;
   std::map<std::string, size_t> taken;
-  for (const mysqlpp::Row& r : q.store()) {
+  for (const mysqlpp::Row& r : res) {
     Request req = read_request(r);
     // Past an account's share, its later requests wait for the next batch: what is taken
     // stays a prefix of its queue, in id order.

@@ -40,6 +40,10 @@ class RequestQueue {
   // The oldest requests of these accounts in id order: at most per_account of each (a
   // prefix of each account's queue) and total in all.
   std::vector<Request> requests_of(const std::vector<std::string>& accounts, size_t per_account, size_t total);
+  // The same as SQL and its result, for a caller that sends it with other statements in
+  // one round trip (server/daemon/request_loop.cpp); accounts not empty.
+  std::string requests_sql(const std::vector<std::string>& accounts, size_t total);
+  static std::vector<Request> requests_from(const mysqlpp::StoreQueryResult& res, size_t per_account);
 
   unsigned long long insert(const Answer& a);  // the sa.id
   void remove(const std::vector<unsigned long long>& request_ids);

@@ -56,14 +56,23 @@ RobotRow RobotStore::read_robot(const mysqlpp::Row& r) {
 
 std::vector<RobotRow> RobotStore::claim(const std::vector<std::string>& accounts) {
   if (accounts.empty()) return {};
+  mysqlpp::Query q = c_.query(claim_sql(accounts));
+  return claimed(q.store(), accounts);
+}
+
+std::string RobotStore::claim_sql(const std::vector<std::string>& accounts) {
   // No ORDER BY/LIMIT: InnoDB would lock in key order and always prefer the same
   // accounts under load; the caller bounds the list and orders it by waiting time.
   mysqlpp::Query q = c_.query();
   q << "SELECT " << kRobotColumns << " FROM robots WHERE db_user IN (";
   for (size_t i = 0; i < accounts.size(); ++i) q << (i ? "," : "") << mysqlpp::quote << accounts[i];
   q << ") FOR UPDATE SKIP LOCKED";
+  return q.str();
+}
+
+std::vector<RobotRow> RobotStore::claimed(const mysqlpp::StoreQueryResult& res, const std::vector<std::string>& accounts) {
   std::vector<RobotRow> rows;
-  for (const mysqlpp::Row& r : q.store()) rows.push_back(read_robot(r));
+  for (const mysqlpp::Row& r : res) rows.push_back(read_robot(r));
   std::vector<RobotRow> out;
   for (const std::string& account : accounts)
     for (RobotRow& r : rows)
@@ -121,12 +130,21 @@ std::optional<TaskRow> RobotStore::open_task(unsigned robot_id) {
 
 std::vector<TaskRow> RobotStore::open_tasks(const std::vector<unsigned>& robot_ids) {
   if (robot_ids.empty()) return {};
+  mysqlpp::Query q = c_.query(open_tasks_sql(robot_ids));
+  return open_tasks_of(q.store());
+}
+
+std::string RobotStore::open_tasks_sql(const std::vector<unsigned>& robot_ids) {
   mysqlpp::Query q = c_.query();
   q << "SELECT " << kTaskColumns << " FROM tasks WHERE state IN " << sql::open_task_states() << " AND robot_id IN (";
   for (size_t i = 0; i < robot_ids.size(); ++i) q << (i ? "," : "") << robot_ids[i];
   q << ") ORDER BY id DESC";
+  return q.str();
+}
+
+std::vector<TaskRow> RobotStore::open_tasks_of(const mysqlpp::StoreQueryResult& res) {
   std::vector<TaskRow> out;
-  for (const mysqlpp::Row& r : q.store()) {
+  for (const mysqlpp::Row& r : res) {
     TaskRow t = read_task(r);
     bool newer_seen = false;  // the newest open task per robot, as open_task()
     for (const TaskRow& o : out) newer_seen = newer_seen || o.robot_id == t.robot_id;

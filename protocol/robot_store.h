@@ -49,6 +49,10 @@ class RobotStore {
   // the queue head), so no row is locked that is not returned; returned in the order given.
   std::vector<RobotRow> claim(const std::vector<std::string>& accounts);
   std::optional<RobotRow> claim(unsigned robot_id);
+  // The same claim as SQL and its result, for a caller that sends it with other statements
+  // in one round trip (server/daemon/request_loop.cpp); accounts not empty.
+  std::string claim_sql(const std::vector<std::string>& accounts);
+  std::vector<RobotRow> claimed(const mysqlpp::StoreQueryResult& res, const std::vector<std::string>& accounts);
 
   void start_session(unsigned id, long long magic);
   void set_state(unsigned id, RobotState state);
@@ -58,6 +62,8 @@ class RobotStore {
   std::optional<TaskRow> open_task(unsigned robot_id);  // the newest task in an open state (is_open)
   // The open task of each of these robots that has one, in one query.
   std::vector<TaskRow> open_tasks(const std::vector<unsigned>& robot_ids);
+  std::string open_tasks_sql(const std::vector<unsigned>& robot_ids);  // likewise; ids not empty
+  static std::vector<TaskRow> open_tasks_of(const mysqlpp::StoreQueryResult& res);
   std::optional<TaskRow> task_pushed_as(unsigned robot_id, unsigned long long answer_id);
   // Writes the state as given: the caller asked task_transition (protocol/task_lifecycle.h).
   void set_task_state(unsigned long long task_id, TaskState state, const std::string& reason = "");

@@ -15,7 +15,12 @@
 #     --idle-seconds S    no-traffic window of phase 3 (default 10)
 #     --polls "LIST"      --poll-max-ms values of phase 3 (default "1 10 50")
 #     --threads T         loadgen client threads (default 8)
-#     --phases "LIST"     any of floor server idle scaling (default all four)
+#     --phases "LIST"     any of floor server idle scaling policy (default the first four)
+#     --policies "LIST"   phase policy: the robots' wait policies (protocol/wait_policy.h), each
+#                         NAME:FIRST,MIN,MAX,BACKOFF (ms, ms, ms, fraction), one fleet run of --robots
+#                         robots each (default: fixed 1, 2, 5 ms, loadgen's old loop, two back-off schedules)
+#     --idles "LIST"      phase policy: idle_ms values, one quiet run each (Alive and idle polls only;
+#                         0 = no idle polls, the baseline) (default "0 100 250 1000")
 #     --server-flags "F"  extra flags for every fleetmap-server (e.g. "--workers 4")
 #     --long              longer windows: --seconds 60 --scaling-seconds 40 --idle-seconds 30
 #     --no-lean           skip the lean prototype rows
@@ -33,6 +38,7 @@ BIN="$BUILD/bin"
 
 ROBOTS=200 SECONDS_=20 SCALING="200 400 600 1000" SCALING_SECONDS=10 PROCS="1 2" IDLE_SECONDS=10
 POLLS="1 10 50" THREADS=8 PHASES="floor server idle scaling" SERVER_FLAGS="" BUILD_FIRST=1 LEAN=1
+POLICIES="fixed1:0,1,1,0 fixed2:0,2,2,0 fixed5:0,5,5,0 loadgen-before:0,1,100000,0.1 backoff1:1,1,50,0.1 backoff2:2,2,50,0.25" IDLES="0 100 250 1000"
 while [ $# -gt 0 ]; do
   case "$1" in
     --robots) ROBOTS="$2"; shift 2 ;;
@@ -44,11 +50,13 @@ while [ $# -gt 0 ]; do
     --polls) POLLS="$2"; shift 2 ;;
     --threads) THREADS="$2"; shift 2 ;;
     --phases) PHASES="$2"; shift 2 ;;
+    --policies) POLICIES="$2"; shift 2 ;;
+    --idles) IDLES="$2"; shift 2 ;;
     --server-flags) SERVER_FLAGS="$2"; shift 2 ;;
     --long) SECONDS_=60; SCALING_SECONDS=40; IDLE_SECONDS=30; shift ;;
     --no-build) BUILD_FIRST=0; shift ;;
     --no-lean) LEAN=0; shift ;;
-    -h|--help) sed -n '2,28p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,31p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench-server: unknown option '$1' (--help)" >&2; exit 64 ;;
   esac
 done
@@ -209,7 +217,25 @@ if has_phase scaling; then
   done
 fi
 
+if has_phase policy; then
+  printf '\n######## 5. robot waiting policy (each: one fleet run of %s robots; then quiet runs by idle_ms)\n' "$ROBOTS"
+  for p in $POLICIES; do
+    IFS=, read -r first min max backoff <<<"${p#*:}"
+    start_servers 1
+    run_lg "$LOG" --mode server --robots "$ROBOTS" --seconds "$SECONDS_" --phase policy --label "${p%%:*} $ROBOTS" \
+      --server-pid "$(pids)" --server-procs 1 --workers "$WORKERS" --wait-first-poll-ms "$first" --wait-min-ms "$min" \
+      --wait-max-ms "$max" --wait-backoff "$backoff"
+    stop_servers
+  done
+  for idle in $IDLES; do
+    start_servers 1
+    run_lg "$LOG" --mode server --workload quiet --robots "$ROBOTS" --seconds "$SECONDS_" --phase policy \
+      --label "quiet idle $idle ms" --server-pid "$(pids)" --server-procs 1 --workers "$WORKERS" --wait-idle-ms "$idle"
+    stop_servers
+  done
+fi
+
 printf '\n######## summary (%s; all figures from this run, %d s)\n' "$RES" $(( $(date +%s) - T_START ))
-for ph in floor server idle scaling; do
+for ph in floor server idle scaling policy; do
   if has_phase "$ph"; then "$BIN/fleetmap-loadgen" --mode report --results "$RES" --phase "$ph"; fi
 done

@@ -133,7 +133,14 @@ int main(int argc, char** argv) {
     if (user) s.user = *user;
     if (password_file) s.password = read_password_file(*password_file);
     s.socket.clear();  // robots connect over the network, as real ones do
-    RobotClient client(s);
+    // The [robot] section's wait_* settings: how often sa_mine is polled (protocol/wait_policy.h).
+    WaitPolicy wait;
+    try {
+      wait.apply(s.program);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("[robot] ") + e.what());  // exit 2, a bad setting
+    }
+    RobotClient client(s, std::chrono::seconds(60), wait);
     const RobotSession session = client.ready(magic ? magic : getpid());
     spdlog::info("registered as robot {} ({}); map of {} segments", session.robot_id, s.user, session.map.segment_count());
     client.start_alive(std::chrono::milliseconds(static_cast<int>(session.alive_period_s * 1000)));

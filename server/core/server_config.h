@@ -22,6 +22,7 @@ struct ServerConfig {
   double body_height_m = 1.0;         // elements starting below this block robots without a profile
   double object_ttl_s = 300;          // SetObject: an observation expires this long after its last sighting
   int lock_wait_timeout_s = 1;        // then find and end the robot connection that blocks
+  double robot_block_ms = 2000;       // a robot blocking another robot this long is ended (SPEC 5.3)
   double commit_delay_ms = 0;         // fault injection for crash tests: a wider window before COMMIT
 
   // Applies "key = value" settings; throws std::invalid_argument naming a bad key or value.

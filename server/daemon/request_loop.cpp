@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -15,6 +16,36 @@
 
 namespace fleetmap {
 namespace {
+
+// Every result of a multi-statement, in order (a statement without rows gives an empty one).
+std::vector<mysqlpp::StoreQueryResult> store_all(mysqlpp::Connection& c, const std::string& sql) {
+  mysqlpp::Query q = c.query(sql);
+  std::vector<mysqlpp::StoreQueryResult> out;
+  out.push_back(q.store());
+  while (q.more_results()) out.push_back(q.store_next());
+  return out;
+}
+
+// A transaction whose START TRANSACTION goes out with the claim (one round trip); rolled
+// back on the way out unless the batch's multi-statement committed it.
+class StartedWithClaim {
+ public:
+  explicit StartedWithClaim(mysqlpp::Connection& c) : c_(c) {}
+  ~StartedWithClaim() {
+    if (done_) return;
+    try {
+      execute(c_, "ROLLBACK");
+    } catch (...) {  // the connection may be gone; the server rolls back on disconnect
+    }
+  }
+  StartedWithClaim(const StartedWithClaim&) = delete;
+  StartedWithClaim& operator=(const StartedWithClaim&) = delete;
+  void committed_by_batch() { done_ = true; }
+
+ private:
+  mysqlpp::Connection& c_;
+  bool done_ = false;
+};
 
 constexpr unsigned kLockWaitTimeout = 1205;
 constexpr unsigned kDeadlock = 1213;
@@ -161,8 +192,24 @@ size_t RequestLoop::serve(bool careful) {
       queue.waiting_accounts(config_.batch_robots * static_cast<size_t>(std::max(1, config_.workers)));
   if (waiting.empty()) return 0;
 
-  Transaction tx(*conn_);
-  std::vector<RobotRow> claimed = robots.claim(my_share(waiting, true));
+  // Round trips of a pass (docs/benchmarks.md): the queue head above; START TRANSACTION
+  // with the claim; the claimed robots' open tasks with their requests; the handlers' own
+  // reads; every write with the COMMIT (write_batch.h). Without multi-statements, one each.
+  std::optional<Transaction> tx;
+  std::optional<StartedWithClaim> tx_multi;
+  const std::vector<std::string> mine = my_share(waiting, true);
+  std::vector<RobotRow> claimed;
+  if (multi_statements_) {
+    tx_multi.emplace(*conn_);  // before sending: a failed claim still rolls back
+    if (mine.empty()) {
+      execute(*conn_, "START TRANSACTION");
+    } else {
+      claimed = robots.claimed(store_all(*conn_, "START TRANSACTION;\n" + robots.claim_sql(mine)).back(), mine);
+    }
+  } else {
+    tx.emplace(*conn_);
+    claimed = robots.claim(mine);
+  }
   if (claimed.empty()) claimed = robots.claim(my_share(waiting, false));  // help the others
   if (claimed.empty()) return 0;
 
@@ -175,11 +222,21 @@ size_t RequestLoop::serve(bool careful) {
     std::string key = r.db_user;
     served.emplace(std::move(key), ServedRobot{std::move(r), std::nullopt});
   }
-  for (TaskRow& t : robots.open_tasks(ids))
+  std::vector<TaskRow> tasks;
+  std::vector<Request> reqs;
+  const size_t total = config_.batch_requests * accounts.size();
+  if (multi_statements_) {
+    const std::vector<mysqlpp::StoreQueryResult> res =
+        store_all(*conn_, robots.open_tasks_sql(ids) + ";\n" + queue.requests_sql(accounts, total));
+    tasks = RobotStore::open_tasks_of(res.at(0));
+    reqs = RequestQueue::requests_from(res.at(1), config_.batch_requests);
+  } else {
+    tasks = robots.open_tasks(ids);
+    reqs = queue.requests_of(accounts, config_.batch_requests, total);
+  }
+  for (TaskRow& t : tasks)
     for (auto& [user, s] : served)
       if (s.robot.id == t.robot_id) s.open_task = t;
-  const std::vector<Request> reqs =
-      queue.requests_of(accounts, config_.batch_requests, config_.batch_requests * accounts.size());
 
   WriteBatch batch(*conn_, multi_statements_);
   WriteBatchSink sink(batch, careful);
@@ -190,7 +247,8 @@ size_t RequestLoop::serve(bool careful) {
   if (config_.commit_delay_ms > 0)
     std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(config_.commit_delay_ms));
   batch.flush(/*commit=*/true);
-  tx.committed_by_batch();
+  if (tx) tx->committed_by_batch();
+  if (tx_multi) tx_multi->committed_by_batch();
   return reqs.size();
 }
 

@@ -50,6 +50,8 @@ int main(int argc, char** argv) {
   setting("--robot-radius", "robot_radius_m", "METRES", "radius robots are planned with (GetPath), m (default 0.3)");
   setting("--object-ttl", "object_ttl_s", "SECONDS",
           "SetObject: an observed object expires this long after it was last seen, s (default 300)");
+  setting("--robot-block-ms", "robot_block_ms", "MS",
+          "a robot connection that blocks another robot's this long is ended, ms (default 2000)");
   setting("--commit-delay-ms", "commit_delay_ms", "MS",
           "tests only: wait this long before each batch's COMMIT, so that a SIGKILL lands in flight (default 0)");
   std::string log_level = "info";
@@ -83,7 +85,9 @@ int main(int argc, char** argv) {
     std::vector<std::thread> workers;
     for (int i = 0; i < cfg.workers; ++i)
       workers.emplace_back([&, i] { RequestLoop(db, cfg, cache, planners, g_stop, i, i == 0).run(); });
-    workers.emplace_back([&] { StallGuard(db, g_stop, std::chrono::milliseconds(250)).run(); });
+    workers.emplace_back([&] { StallGuard(db, g_stop, std::chrono::milliseconds(250),
+                                                  std::chrono::duration<double, std::milli>(cfg.robot_block_ms))
+                                           .run(); });
     for (auto& t : workers) t.join();
     spdlog::info("fleetmap-server stopped");
     return exit_code::kOk;

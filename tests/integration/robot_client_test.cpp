@@ -1,5 +1,6 @@
 // The robot client library against the real server: handshake, zoom-map refresh by
 // distance and by time-out, pushed operations acknowledged, a database restart survived.
+#include <functional>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -110,6 +111,44 @@ TEST_F(RobotClientTest, AliveTimerKeepsTheRobotFromBeingLost) {
   client.stop_alive();
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));
   EXPECT_EQ(scalar("SELECT state = 'lost' FROM robots WHERE db_user = 'client_r1'"), 1);
+}
+
+// The client polls sa_mine on its WaitPolicy's schedule (protocol/wait_policy.h), not on
+// every call: idle, a control loop calling receive() every millisecond costs one poll per
+// idle_ms; with an answer due and no server to answer it, one poll per gap.
+TEST_F(RobotClientTest, PollsOnTheWaitPolicysSchedule) {
+  WaitPolicy w;
+  w.first_poll_ms = 1;
+  w.min_ms = w.max_ms = 20;
+  w.backoff = 0;
+  w.idle_ms = 300;
+  RobotClient client(settings_, std::chrono::seconds(60), w);
+  client.ready(4);
+  using std::chrono::milliseconds;
+  auto count_polls = [&](milliseconds span, const std::function<void()>& step) {
+    const size_t before = client.polls();
+    const auto until = std::chrono::steady_clock::now() + span;
+    while (std::chrono::steady_clock::now() < until) step();
+    return client.polls() - before;
+  };
+  const size_t idle = count_polls(milliseconds(1000), [&] {
+    client.receive();
+    std::this_thread::sleep_for(milliseconds(1));
+  });
+  EXPECT_GE(idle, 3u);  // 1000 ms / 300 ms
+  EXPECT_LE(idle, 4u);
+  server_.reset();  // nobody answers: the SendGPS stays due
+  const auto id = client.send(RequestOp::SendGPS, Json{{"lat", 10.5}, {"lon", 20.25}});
+  const size_t due = count_polls(milliseconds(400), [&] {
+    client.receive();
+    std::this_thread::sleep_for(milliseconds(1));
+  });
+  EXPECT_GE(due, 15u);  // 400 ms / 20 ms, the first 1 ms after the send
+  EXPECT_LE(due, 22u);
+  const size_t awaiting = client.polls();
+  EXPECT_THROW(client.await(id, 1, milliseconds(300)), RobotClientError);
+  EXPECT_GE(client.polls() - awaiting, 12u);
+  EXPECT_LE(client.polls() - awaiting, 17u);
 }
 
 TEST_F(RobotClientTest, SurvivesADatabaseRestart) {
