@@ -10,8 +10,9 @@
 namespace fleetmap {
 namespace {
 
-Placement place(const RayCaster& caster, const TourEvent& e, const TourPlacementOptions& o) {
-  switch (e.kind) {
+Placement place(const RayCaster& caster, const TourEvent& e, const TourBuildOptions& b) {
+  const TourPlacementOptions& o = b.placement;
+  if (b.measure) switch (e.kind) {
     case TourEventKind::EnterCorridor: return centre_in_corridor(caster, e.pose, o);
     case TourEventKind::Door: return centre_in_doorway(caster, e.pose, o);
     case TourEventKind::EnterRoom:
@@ -55,7 +56,7 @@ TourGraph build_tour_graph(const RayCaster& caster, const std::vector<TourEvent>
     const TourEvent& e = events[k];
     if (!std::isfinite(e.pose.x) || !std::isfinite(e.pose.y) || !std::isfinite(e.pose.theta))
       throw TopoGraphError("tour event " + std::to_string(k) + ": expected a finite pose");
-    const Placement at = place(caster, e, o.placement);
+    const Placement at = place(caster, e, o);
     int id = merge_target(nodes, t.kinds, e, at.pos, o.merge_distance);
     if (id < 0) {
       id = static_cast<int>(nodes.size());

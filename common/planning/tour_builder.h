@@ -33,6 +33,7 @@ namespace fleetmap {
 struct TourBuildOptions {
   double merge_distance = 1.5;  // metres; 0: never merge by distance
   EdgeType first_edge = EdgeType::Corridor;
+  bool measure = true;          // false: every node at the robot's pose (the baseline of bench-tour)
   TourPlacementOptions placement;
 };
 
