@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
   GuidedWalkOptions walk_options;
   app.add_option("--map", map_file, "segment map (AMRL .vectormap.txt or seed .map)")->capture_default_str();
   app.add_option("--graph", nav_file, "hand-made navigation graph (JSON)")->capture_default_str();
-  app.add_option("--start", start, "node the tour starts at (default: the first in the file)");
+  app.add_option("--start", start, "node the tour starts at (default: the first edge's first end)");
   app.add_option("--merge", merge, "merge distance (m)")->capture_default_str();
   app.add_option("--keep-right", keep, "metres the guide walks right of the graph's lines (0: on them)")
       ->capture_default_str();
@@ -113,7 +113,7 @@ int main(int argc, char** argv) {
 
   const Map map = read_map_file(map_file);
   const TopoGraph hand = read_topo_json_file(nav_file);
-  if (start < 0) start = hand.nodes().front().id;
+  if (start < 0) start = hand.edges().empty() ? hand.nodes().front().id : hand.edges().front().a;
   const std::vector<TourWaypoint> tour = keep_right(tour_of_graph(hand, start), keep);
   if (!write_tour.empty()) {
     std::FILE* out = std::fopen(write_tour.c_str(), "w");

@@ -15,8 +15,8 @@ Placement place(const RayCaster& caster, const TourEvent& e, const TourBuildOpti
   if (b.measure) switch (e.kind) {
     case TourEventKind::EnterCorridor: return centre_in_corridor(caster, e.pose, o);
     case TourEventKind::Door: return centre_in_doorway(caster, e.pose, o);
+    case TourEventKind::Crossing: return centre_in_crossing(caster, e.pose, o);
     case TourEventKind::EnterRoom:
-    case TourEventKind::Crossing:
     case TourEventKind::Place: break;
   }
   return {{e.pose.x, e.pose.y}, false, 0};

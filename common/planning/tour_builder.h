@@ -8,7 +8,7 @@
 //   EnterRoom      the pose (rooms have no structure to      room
 //                  measure, seed 003 §IV)
 //   Door           centred between the door posts           door
-//   Crossing       the pose                                 (keeps the current type)
+//   Crossing       centred in the crossing (most clearance)  (keeps the current type)
 //   Place          the pose, with the place's name          (keeps the current type)
 //
 // The edge from the previous event's node to this one has the type announced last

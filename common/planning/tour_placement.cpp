@@ -86,4 +86,33 @@ Placement centre_in_doorway(const RayCaster& caster, const TourPose& pose, const
   return {p, false, 0};
 }
 
+Placement centre_in_crossing(const RayCaster& caster, const TourPose& pose, const TourPlacementOptions& o) {
+  const Point p = at(pose);
+  constexpr int kRays = 72;
+  constexpr double kStep = 0.1;
+  auto clearance = [&](Point q, double enough) {
+    double c = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < kRays && c > enough; ++i) c = std::min(c, caster.cast(q, 2 * std::numbers::pi * i / kRays));
+    return c;
+  };
+  const int n = static_cast<int>(std::floor(o.crossing_window / kStep));
+  std::vector<std::pair<Point, double>> grid;  // point, clearance
+  double most = 0;
+  for (int i = -n; i <= n; ++i) {
+    for (int j = -n; j <= n; ++j) {
+      const Point q = p + Point{i * kStep, j * kStep};
+      grid.emplace_back(q, clearance(q, -1));
+      most = std::max(most, grid.back().second);
+    }
+  }
+  if (!(most > 0) || !is_hit(most, caster, o)) return {p, false, 0};
+  // Of the points within 1 cm of the most, the one nearest the pose (a corridor's
+  // length has no single best point).
+  Placement best{p, true, 2 * most};
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto& [q, c] : grid)
+    if (c >= most - 0.01 && distance(q, p) < nearest) nearest = distance(q, p), best.pos = q;
+  return best;
+}
+
 }  // namespace fleetmap

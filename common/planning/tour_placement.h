@@ -18,9 +18,12 @@
 //             its nearest walls (clearance about half the chord: not a chord cutting
 //             a corner) spans the doorway; the node is its middle. This works on walls drawn as single lines, where a ray from
 //             inside the gap along the wall would touch nothing.
+//   crossing: the point of most clearance (nearest wall, 72 rays) on a 0.1 m grid within
+//             crossing_window of the pose: where corridors cross, the clearance is
+//             largest at the middle, between the corners.
 //
-// Either falls back to the pose (measured = false) when nothing fits: an open side,
-// no gap near the pose.
+// Each falls back to the pose (measured = false) when nothing fits: an open side,
+// no gap near the pose, no wall within reach of a crossing.
 #include "common/geometry/geometry.h"
 #include "common/planning/tour_event.h"
 #include "common/raycast/ray_caster.h"
@@ -34,6 +37,7 @@ struct TourPlacementOptions {
   int door_rays = 1440;            // rays of the door fan (0.25°)
   double min_gap = 0.4;            // metres: no robot passes a narrower gap
   double max_width = 8.0;          // metres: a wider chord is no corridor or door
+  double crossing_window = 1.0;    // metres either way of the pose, in x and y
 };
 
 struct Placement {
@@ -45,5 +49,7 @@ struct Placement {
 // The caster's rmax should be at least max_width: rays that reach rmax meet no wall.
 Placement centre_in_corridor(const RayCaster& caster, const TourPose& pose, const TourPlacementOptions& o = {});
 Placement centre_in_doorway(const RayCaster& caster, const TourPose& pose, const TourPlacementOptions& o = {});
+// width: twice the clearance found.
+Placement centre_in_crossing(const RayCaster& caster, const TourPose& pose, const TourPlacementOptions& o = {});
 
 }  // namespace fleetmap

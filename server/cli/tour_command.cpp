@@ -35,7 +35,7 @@ std::string count_kinds(const TourGraph& t) {
   std::string s;
   for (auto [k, c] : by_kind) {
     s += (s.empty() ? "" : ", ") + std::to_string(c.first) + " " + std::string(to_string(k));
-    if (k == TourEventKind::EnterCorridor || k == TourEventKind::Door)
+    if (k == TourEventKind::EnterCorridor || k == TourEventKind::Door || k == TourEventKind::Crossing)
       s += " (" + std::to_string(c.second) + " centred)";
   }
   return s;

@@ -133,6 +133,18 @@ TEST(TourPlacement, AWallAheadIsNoDoor) {
   EXPECT_EQ(q.pos, (Point{0.4, 0.0}));
 }
 
+TEST(TourPlacement, CrossingNodeIsCentredBetweenTheCorners) {
+  // Corridors along x (walls y = ±1) and y (walls x = ±1) crossing at the origin, whose
+  // corners (±1, ±1) are nearest the middle.
+  const Map m = with_walls({wall(1, {{-10, 1}, {-1, 1}, {-1, 10}}), wall(2, {{1, 10}, {1, 1}, {10, 1}}),
+                            wall(3, {{10, -1}, {1, -1}, {1, -10}}), wall(4, {{-1, -10}, {-1, -1}, {-10, -1}})});
+  const Placement p = centre_in_crossing(caster(m), {0.5, -0.4, 0.3});
+  ASSERT_TRUE(p.measured);
+  EXPECT_NEAR(p.pos.x, 0.0, 0.1);
+  EXPECT_NEAR(p.pos.y, 0.0, 0.1);
+  EXPECT_NEAR(p.width, 2 * std::sqrt(2.0), 0.1);
+}
+
 TourEvent ev(TourEventKind k, double x, double y, double theta, std::string name = "") {
   return {k, {x, y, theta}, std::move(name), 0};
 }
