@@ -100,6 +100,7 @@ int main(int argc, char** argv) {
   double merge = 1.5, keep = 0.5;
   int start = -1;
   GuidedWalkOptions walk_options;
+  walk_options.max_time_s = 1e6;  // a campus tour takes more than an hour
   app.add_option("--map", map_file, "segment map (AMRL .vectormap.txt or seed .map)")->capture_default_str();
   app.add_option("--graph", nav_file, "hand-made navigation graph (JSON)")->capture_default_str();
   app.add_option("--start", start, "node the tour starts at (default: the first edge's first end)");
