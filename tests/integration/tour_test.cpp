@@ -121,6 +121,33 @@ TEST_F(GuidedTour, EventsBecomeTheMapsGraph) {
   EXPECT_EQ(run("fleetmap", "topo tour build tour_map --robot tour_r1 --tour none").exit_code, 4);
 }
 
+TEST_F(GuidedTour, TheSimulatedRobotFollowsAGuideAndSendsTheEvents) {
+  // fleetmap-robot --tour: along the corridor 0.6 m above its centre line, through the
+  // door, into the room; the robot reaches each event point and sends TourEvent.
+  const std::string tour = temp_path("tour_walk.json");
+  write_file(tour, R"([{"x": 2, "y": 2.1, "event": "place", "name": "dock"},
+                      {"x": 6, "y": 2.1, "event": "corridor"},
+                      {"x": 10.5, "y": 2.1},
+                      {"x": 10.5, "y": 2.6, "event": "door"},
+                      {"x": 10.5, "y": 5, "event": "room"},
+                      {"x": 15, "y": 6, "event": "place", "name": "desk"}])");
+  robot_.reset();  // the program registers on its own
+  const RunResult r = run("fleetmap-robot", "--config " + std::string(std::getenv("FLEETMAP_CONFIG")) +
+                                                " --user tour_r1 --password-file " + temp_path("tour_r1.pw") +
+                                                " --tour " + tour + " --tour-fast --tour-name walk");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const RunResult b = run("fleetmap", "topo tour build tour_map --robot tour_r1 --tour walk");
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM tour_events WHERE tour = 'walk'"), 5);
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM topo_nodes WHERE map = 'tour_map'"), 5);
+  // Walked 0.6 m off the centre line, the corridor node is on it; the door node between the posts.
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM topo_nodes WHERE map = 'tour_map' AND ABS(y - 1.5) < 0.1 AND ABS(x - 6) < 0.2"),
+            1);
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM topo_nodes WHERE map = 'tour_map' AND ABS(y - 3) < 0.1 AND ABS(x - 10.5) < 0.1"),
+            1);
+  EXPECT_NEAR(node_field("x", "name = 'desk'"), 15.0, 0.15);
+}
+
 TEST_F(GuidedTour, WithoutAPoseTheEventIsRefused) {
   const auto id = robot_->send("TourEvent", R"({"event": "crossing"})");
   const auto a = robot_->receive(1);
