@@ -10,6 +10,7 @@
 #include "common/map/map.h"
 #include "common/planning/tour_builder.h"
 #include "common/planning/tour_placement.h"
+#include "common/planning/tour_plan.h"
 #include "common/raycast/seed_ray_caster.h"
 
 namespace fleetmap {
@@ -224,6 +225,33 @@ TEST(TourBuilder, NamedPlacesMergeByName) {
   ASSERT_EQ(t.graph.nodes().size(), 3u);
   EXPECT_EQ(t.event_nodes, (std::vector<int>{0, 1, 2, 1, 0}));
   EXPECT_EQ(t.graph.node(1).name, "printer");
+}
+
+TEST(TourPlan, EveryEdgeIsWalkedOutAndBackWithEventsFromTheDegree) {
+  // A T: 0 - 1 - 2 along x, 1 - 3 up; node 1 is the crossing, 0, 2, 3 dead ends.
+  TopoGraph g;
+  g.add_node({0, {0, 0}, ""});
+  g.add_node({1, {5, 0}, ""});
+  g.add_node({2, {10, 0}, "lab"});
+  g.add_node({3, {5, 5}, ""});
+  g.add_edge({.a = 0, .b = 1});
+  g.add_edge({.a = 1, .b = 2});
+  g.add_edge({.a = 1, .b = 3});
+  const std::vector<TourWaypoint> t = tour_of_graph(g, 0);
+  std::vector<int> nodes;
+  for (const TourWaypoint& w : t) nodes.push_back(w.node);
+  EXPECT_EQ(nodes, (std::vector<int>{0, 1, 2, 1, 3, 1, 0}));
+  EXPECT_EQ(t[0].event, TourEventKind::Place);
+  EXPECT_EQ(t[0].name, "node 0");
+  EXPECT_EQ(t[1].event, TourEventKind::Crossing);
+  EXPECT_EQ(t[2].name, "lab");
+  EXPECT_EQ(t[2].p, (Point{10, 0}));
+
+  // Keeping right 0.5 m: walking +x, right is -y; walking up (+y) to node 3, right is +x.
+  const std::vector<TourWaypoint> r = keep_right(t, 0.5);
+  EXPECT_NEAR(r[1].p.y, -0.5, 1e-12);
+  EXPECT_NEAR(r[4].p.x, 5.5, 1e-12);
+  EXPECT_NEAR(r[0].p.y, -0.5, 1e-12);  // the first: right of the way it leaves in
 }
 
 TEST(TourBuilder, KindsRoundTripTheirWords) {
