@@ -6,11 +6,12 @@
 namespace fleetmap {
 namespace {
 
-constexpr std::array<std::pair<RequestOp, std::string_view>, 12> kRequestOps{{
+constexpr std::array<std::pair<RequestOp, std::string_view>, 13> kRequestOps{{
     {RequestOp::Ready, "Ready"}, {RequestOp::Alive, "Alive"}, {RequestOp::Stopped, "Stopped"},
     {RequestOp::OpAck, "OpAck"}, {RequestOp::SendPos, "SendPos"}, {RequestOp::SendGPS, "SendGPS"},
     {RequestOp::SendImage, "SendImage"}, {RequestOp::GetMap, "GetMap"}, {RequestOp::GetPath, "GetPath"},
     {RequestOp::GetPosIni, "GetPosIni"}, {RequestOp::GetPosEnd, "GetPosEnd"}, {RequestOp::SetObject, "SetObject"},
+    {RequestOp::TourEvent, "TourEvent"},
 }};
 
 constexpr std::array<std::pair<AnswerOp, std::string_view>, 8> kAnswerOps{{

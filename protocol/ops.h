@@ -8,7 +8,8 @@ namespace fleetmap {
 
 // Robot -> server (rr.op).
 enum class RequestOp { Ready, Alive, Stopped, OpAck, SendPos, SendGPS, SendImage, GetMap, GetPath, GetPosIni,
-                       GetPosEnd, SetObject };
+                       GetPosEnd, SetObject,
+                       TourEvent };  // TourEvent: docs/protocol.md (an extension to SPEC 5)
 
 // Server -> robot (sa.op).
 enum class AnswerOp { Start, OpAck, Abort, SetMap, SetPath, SetPosIni, SetPosEnd, Error };

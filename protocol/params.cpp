@@ -165,6 +165,24 @@ SetObjectParams decode_set_object(const Json& j) {
   return {number(j, "x"), number(j, "y"), text(j, "object")};
 }
 
+TourEventParams decode_tour_event(const Json& j) {
+  require_object(j);
+  TourEventParams p;
+  const std::string event = text(j, "event");
+  const std::optional<TourEventKind> kind = tour_event_kind_from_string(event);
+  if (!kind) bad("event", "\"corridor\", \"room\", \"door\", \"crossing\" or \"place\", got \"" + event + "\"");
+  p.kind = *kind;
+  if (const Json* v = find(j, "name"); v && !v->is_null()) p.name = text(j, "name");
+  if (p.kind == TourEventKind::Place && p.name.empty()) bad("name", "a name for a place, got nothing");
+  if (const Json* v = find(j, "tour"); v && !v->is_null()) p.tour = text(j, "tour");
+  p.x = optional_number(j, "x");
+  p.y = optional_number(j, "y");
+  p.theta = optional_number(j, "theta", 1e3);
+  const int given = p.x.has_value() + p.y.has_value() + p.theta.has_value();
+  if (given != 0 && given != 3) bad(p.x ? (p.y ? "theta" : "y") : "x", "x, y and theta together, or none of them");
+  return p;
+}
+
 void decode_empty(const Json& j) { require_object(j); }
 
 Json encode(const StartParams& p) {

@@ -13,6 +13,7 @@
 
 #include "common/geometry/geometry.h"
 #include "common/core/error.h"
+#include "common/planning/tour_event.h"
 #include "protocol/ops.h"
 
 namespace fleetmap {
@@ -62,6 +63,14 @@ struct GetMapParams {
   std::optional<MapMode> mode;  // nullopt: "2d"
 };
 struct SetObjectParams { double x = 0, y = 0; std::string object; };
+// TourEvent (docs/protocol.md): what the guide said (seed 003 §III); the pose is the
+// robot's last SendPos unless all of x, y, theta are given.
+struct TourEventParams {
+  TourEventKind kind = TourEventKind::EnterCorridor;
+  std::string name;  // "" when absent; a place needs one
+  std::string tour;  // "" when absent: the robot's default tour
+  std::optional<double> x, y, theta;
+};
 
 // The params column as a JSON object; throws ProtocolError(bad_json).
 Json parse_params(std::string_view text);
@@ -73,6 +82,7 @@ SendGpsParams decode_send_gps(const Json& j);
 SendImageParams decode_send_image(const Json& j);
 GetMapParams decode_get_map(const Json& j);
 SetObjectParams decode_set_object(const Json& j);
+TourEventParams decode_tour_event(const Json& j);
 void decode_empty(const Json& j);  // Alive, Stopped, GetPath, GetPosIni, GetPosEnd: {} (extra fields ignored)
 
 // Server -> robot.

@@ -17,6 +17,8 @@
 #include "client/robot_client.h"
 #include "client/sim/localization_trials.h"
 #include "client/sim/sim_robot.h"
+#include "client/sim/tour_run.h"
+#include "common/io/tour_json.h"
 #include "common/core/error.h"
 #include "common/io/amrl_import.h"
 #include "common/io/read_map_file.h"
@@ -119,10 +121,20 @@ int main(int argc, char** argv) {
   app.add_option("--look-around", look_around,
                  "--trials: scans turning 60 degrees in place before wandering (0: wander from the first)")
       ->capture_default_str();
+  std::optional<std::string> tour_file;
+  TourRunOptions tour_options;
+  app.add_option("--tour", tour_file,
+                 "follow a simulated guide along this tour file (JSON list of {x, y, event?, name?}) and send "
+                 "TourEvent at its events (docs/topology-tour.md); --start is not needed")
+      ->check(CLI::ExistingFile);
+  app.add_option("--tour-name", tour_options.tour, "TourEvent params.tour (default: the robot's unnamed tour)");
+  app.add_option("--follow", tour_options.walk.follow_distance, "--tour: metres behind the guide")->capture_default_str();
+  bool tour_fast = false;
+  app.add_flag("--tour-fast", tour_fast, "--tour: run as fast as the server answers, not in real time");
   app.footer("Exit codes: 0 ok, 1 failure (database, server), 2 bad input, 5 localization failed, 64 usage.");
   return run_program("fleetmap-robot", app, argc, argv, [&]() -> int {
     if (trials > 0) return run_trials(trials, map_files, presets, skip_tracking, look_around, o);
-    if (start.size() != 3) throw UsageError("--start X Y THETA is required (or --trials N)");
+    if (start.size() != 3 && !tour_file) throw UsageError("--start X Y THETA is required (or --trials N, or --tour FILE)");
     spdlog::set_level(spdlog::level::from_str(log_level));
     spdlog::set_pattern("%H:%M:%S.%e %^%-5l%$ [robot] %v");
     std::signal(SIGTERM, on_signal);
@@ -144,6 +156,14 @@ int main(int argc, char** argv) {
     const RobotSession session = client.ready(magic ? magic : getpid());
     spdlog::info("registered as robot {} ({}); map of {} segments", session.robot_id, s.user, session.map.segment_count());
     client.start_alive(std::chrono::milliseconds(static_cast<int>(session.alive_period_s * 1000)));
+    if (tour_file) {
+      const std::vector<TourWaypoint> tour = read_tour_json_file(*tour_file);
+      tour_options.realtime = !tour_fast;
+      const size_t n = run_guided_tour(client, tour, tour_options, g_stop);
+      spdlog::info("tour done: {} events acknowledged; build it with 'fleetmap topo tour build MAP --robot {}'", n,
+                   s.user);
+      return exit_code::kOk;
+    }
     Map truth = session.map;
     if (world) truth = read_map_file(*world);
     if (kidnap.size() == 4) {

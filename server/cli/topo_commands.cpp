@@ -18,6 +18,7 @@
 #include "common/core/error.h"
 #include "server/cli/command.h"
 #include "server/cli/map_source.h"
+#include "server/cli/tour_command.h"
 
 namespace fleetmap {
 namespace {
@@ -211,6 +212,7 @@ void add_topo_commands(CLI::App& app, CliContext& ctx) {
   add_topo_route(*topo, ctx);
   add_topo_export(*topo, ctx);
   add_topo_delete(*topo, ctx);
+  add_topo_tour_commands(*topo, ctx);
 }
 
 }  // namespace fleetmap

@@ -5,6 +5,7 @@
 //   topo route MAP FROM TO [--no-stairs] [--radius R]  shortest route; FROM/TO: node id or X,Y
 //   topo export MAP [--format json|geojson] [-o FILE]
 //   topo delete MAP
+//   topo tour build|list ...                           graphs from guided tours (tour_command.h)
 // Exit codes (exit_codes.h): 2 malformed file or argument, 3 no route, 4 unknown map,
 // graph or node, or a graph exists (import without --replace).
 #include <CLI/CLI.hpp>

@@ -1,6 +1,7 @@
 #include "server/daemon/db_handler_stores.h"
 
 #include "protocol/scene_store.h"
+#include "protocol/tour_store.h"
 #include "server/daemon/robot_map_source.h"
 
 namespace fleetmap {
@@ -29,6 +30,11 @@ void DbRobotRecords::record_observation(unsigned map_id, unsigned robot_id, cons
                                         const std::string& at) {
   SceneStore(c_).record_observation(map_id, robot_id, {p.x, p.y}, p.object, ttl_s, at);
   RobotMapSource::shared().note_change(map_id);
+}
+
+void DbRobotRecords::record_tour_event(unsigned robot_id, std::optional<unsigned> map_id, const std::string& tour,
+                                       const TourEvent& e, const std::string& at) {
+  TourStore(c_).record(robot_id, map_id, tour, e, at);
 }
 
 std::optional<MapInfo> DbRobotMaps::info(unsigned map_id) {

@@ -30,6 +30,8 @@ class DbRobotRecords : public RobotRecords {
                      const std::string& at) override;
   void record_observation(unsigned map_id, unsigned robot_id, const SetObjectParams& p, double ttl_s,
                           const std::string& at) override;
+  void record_tour_event(unsigned robot_id, std::optional<unsigned> map_id, const std::string& tour, const TourEvent& e,
+                         const std::string& at) override;
 
  private:
   mysqlpp::Connection& c_;

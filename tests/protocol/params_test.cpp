@@ -503,6 +503,49 @@ TEST(ParamsSmallAnswers, OpAckAndAbortShapes) {
   EXPECT_EQ(encode_abort(""), J(R"({"reason": ""})"));
 }
 
+// ---- TourEvent (docs/protocol.md) ---------------------------------------------------
+
+TEST(ParamsTourEvent, DecodesTheEventNameTourAndPose) {
+  TourEventParams p = decode_tour_event(J(R"({"event": "door"})"));
+  EXPECT_EQ(p.kind, TourEventKind::Door);
+  EXPECT_EQ(p.name, "");
+  EXPECT_EQ(p.tour, "");
+  EXPECT_FALSE(p.x);
+  p = decode_tour_event(J(R"({"event": "place", "name": "dock", "tour": "floor 1", "x": 1.5, "y": -2, "theta": 3})"));
+  EXPECT_EQ(p.kind, TourEventKind::Place);
+  EXPECT_EQ(p.name, "dock");
+  EXPECT_EQ(p.tour, "floor 1");
+  EXPECT_EQ(p.x, 1.5);
+  EXPECT_EQ(p.y, -2);
+  EXPECT_EQ(p.theta, 3);
+  EXPECT_EQ(decode_tour_event(J(R"({"event": "corridor"})")).kind, TourEventKind::EnterCorridor);
+  EXPECT_EQ(decode_tour_event(J(R"({"event": "room"})")).kind, TourEventKind::EnterRoom);
+  EXPECT_EQ(decode_tour_event(J(R"({"event": "crossing", "name": null})")).kind, TourEventKind::Crossing);
+}
+
+TEST(ParamsTourEvent, MalformedParamsNameTheField) {
+  const std::pair<const char*, const char*> cases[] = {
+      {R"({})", "params.event"},
+      {R"({"event": "hall"})", "params.event"},
+      {R"({"event": 3})", "params.event"},
+      {R"({"event": "place"})", "params.name"},
+      {R"({"event": "door", "name": ""})", "params.name"},
+      {R"({"event": "door", "tour": 7})", "params.tour"},
+      {R"({"event": "door", "x": 1, "y": 2})", "params.theta"},
+      {R"({"event": "door", "y": 2, "theta": 0})", "params.x"},
+      {R"({"event": "door", "x": "1", "y": 2, "theta": 0})", "params.x"},
+  };
+  for (const auto& [params, field] : cases) {
+    try {
+      decode_tour_event(J(params));
+      ADD_FAILURE() << params << ": accepted";
+    } catch (const ProtocolError& e) {
+      EXPECT_EQ(e.code(), ErrorCode::BadParams) << params;
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << params << ": " << e.what();
+    }
+  }
+}
+
 // ---- Names ------------------------------------------------------------------------
 
 TEST(ParamsOpNames, RequestOpsRoundTripWithTheProtocolSpelling) {
@@ -511,6 +554,7 @@ TEST(ParamsOpNames, RequestOpsRoundTripWithTheProtocolSpelling) {
       {RequestOp::OpAck, "OpAck"},         {RequestOp::SendPos, "SendPos"},     {RequestOp::SendGPS, "SendGPS"},
       {RequestOp::SendImage, "SendImage"}, {RequestOp::GetMap, "GetMap"},       {RequestOp::GetPath, "GetPath"},
       {RequestOp::GetPosIni, "GetPosIni"}, {RequestOp::GetPosEnd, "GetPosEnd"}, {RequestOp::SetObject, "SetObject"},
+      {RequestOp::TourEvent, "TourEvent"},
   };
   for (const auto& [op, text] : table) {
     EXPECT_EQ(name(op), text);

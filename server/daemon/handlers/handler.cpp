@@ -30,6 +30,7 @@ Handler handler_for(RequestOp op) {
     case RequestOp::GetPosIni: return handle_get_pos_ini;
     case RequestOp::GetPosEnd: return handle_get_pos_end;
     case RequestOp::SetObject: return handle_set_object;
+    case RequestOp::TourEvent: return handle_tour_event;
   }
   return nullptr;
 }

@@ -79,6 +79,7 @@ void handle_get_path(HandlerContext&);
 void handle_get_pos_ini(HandlerContext&);
 void handle_get_pos_end(HandlerContext&);
 void handle_set_object(HandlerContext&);
+void handle_tour_event(HandlerContext&);
 
 // The robot's map, or ProtocolError internal when it has none or it was deleted.
 MapInfo robot_map_info(HandlerContext& ctx);

@@ -5,7 +5,7 @@
 // (tests/server/daemon/fake_stores.h).
 //
 //   RobotRecords  the rare writes a handler makes at once (sessions, task states,
-//                 images, observed objects) and the one lookup OpAck needs
+//                 images, observed objects, tour events) and the one lookup OpAck needs
 //   RobotMaps     the robot's map, its window, scene and planner
 #include <memory>
 #include <optional>
@@ -42,6 +42,9 @@ class RobotRecords {
   // this sighting; the robots' maps show it from the next batch on.
   virtual void record_observation(unsigned map_id, unsigned robot_id, const SetObjectParams& p, double ttl_s,
                                   const std::string& at) = 0;
+  // A guided tour's event (TourEvent; protocol/tour_store.h).
+  virtual void record_tour_event(unsigned robot_id, std::optional<unsigned> map_id, const std::string& tour,
+                                 const TourEvent& e, const std::string& at) = 0;
 };
 
 class RobotMaps {

@@ -44,6 +44,14 @@ class FakeRecords : public RobotRecords {
   std::vector<Image> images;
   std::vector<Object> objects;
   std::vector<Observation> observations;
+  struct RecordedTourEvent {
+    unsigned robot_id;
+    std::optional<unsigned> map_id;
+    std::string tour;
+    TourEvent event;
+    std::string at;
+  };
+  std::vector<RecordedTourEvent> tour_events;
 
   void start_session(unsigned robot_id, long long magic) override { sessions[robot_id] = magic; }
   void set_task_state(unsigned long long task_id, TaskState state, const std::string& reason) override {
@@ -69,8 +77,13 @@ class FakeRecords : public RobotRecords {
                           const std::string& at) override {
     observations.push_back({map_id, robot_id, p, ttl_s, at});
   }
+  void record_tour_event(unsigned robot_id, std::optional<unsigned> map_id, const std::string& tour, const TourEvent& e,
+                         const std::string& at) override {
+    tour_events.push_back({robot_id, map_id, tour, e, at});
+  }
   bool wrote_anything() const {
-    return !sessions.empty() || !task_states.empty() || !images.empty() || !objects.empty() || !observations.empty();
+    return !sessions.empty() || !task_states.empty() || !images.empty() || !objects.empty() || !observations.empty() ||
+           !tour_events.empty();
   }
 };
 
