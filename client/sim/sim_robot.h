@@ -12,6 +12,7 @@
 #include "client/sim/laser_simulator.h"
 #include "client/localization/particle_filter.h"
 #include "client/robot_client.h"
+#include "client/route_edges.h"
 #include "client/sim/differential_drive.h"
 #include "client/sim/pure_pursuit.h"
 #include "client/zoom_map_client.h"
@@ -67,6 +68,7 @@ class SimRobot {
   localization::LaserSimulator laser_;
   std::unique_ptr<localization::ParticleFilter> filter_;
   PurePursuit pursuit_;
+  RouteEdges route_;  // the path's topological edges, when GetPath went through the graph
   std::unique_ptr<ZoomMapClient> zoom_;
   std::mt19937_64 rng_;
   Map map_;  // the map the filter works on: the whole map or the current window
