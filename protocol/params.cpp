@@ -202,7 +202,16 @@ Json encode(const SetMapParams& p) {
 Json encode(const SetPathParams& p) {
   Json w = Json::array();
   for (Point q : p.waypoints) w.push_back({q.x, q.y});
-  return {{"waypoints", w}, {"length", p.length}};
+  Json j = {{"waypoints", w}, {"length", p.length}};
+  if (!p.nodes.empty()) {
+    Json& nodes = j["nodes"] = Json::array();
+    for (const PathNode& n : p.nodes) nodes.push_back({{"id", n.id}, {"name", n.name}, {"x", n.x}, {"y", n.y}});
+  }
+  if (!p.edges.empty()) {
+    Json& edges = j["edges"] = Json::array();
+    for (const PathEdge& e : p.edges) edges.push_back({{"from", e.from}, {"to", e.to}, {"type", e.type}});
+  }
+  return j;
 }
 
 Json encode(const SetPoseParams& p) {
@@ -257,6 +266,54 @@ SetPathParams decode_set_path(const Json& j) {
     p.waypoints.push_back({q[0].get<double>(), q[1].get<double>()});
   }
   p.length = number(j, "length");
+  // The route (optional): each element is checked with its index in the field's name.
+  auto elements = [&](const char* field, const char* what) -> const Json* {
+    const Json* v = find(j, field);
+    if (!v || v->is_null()) return nullptr;
+    if (!v->is_array()) bad(field, what);
+    for (const Json& e : *v)
+      if (!e.is_object()) bad(field, what);
+    return v;
+  };
+  auto at = [](const char* field, size_t i, const char* key) {
+    return std::string(field) + "[" + std::to_string(i) + "]." + key;
+  };
+  auto id_of = [&](const Json& e, const char* field, size_t i, const char* key) {
+    const Json* v = find(e, key);
+    if (!v || !v->is_number_integer() || v->get<long long>() < 0 || v->get<long long>() > std::numeric_limits<int>::max())
+      bad(at(field, i, key), "a node id (an integer >= 0)");
+    return static_cast<int>(v->get<long long>());
+  };
+  if (const Json* nodes = elements("nodes", "an array of {\"id\", \"name\", \"x\", \"y\"}")) {
+    for (size_t i = 0; i < nodes->size(); ++i) {
+      const Json& e = (*nodes)[i];
+      PathNode n;
+      n.id = id_of(e, "nodes", i, "id");
+      if (const Json* name = find(e, "name"); name && !name->is_null()) {
+        if (!name->is_string()) bad(at("nodes", i, "name"), "a string");
+        n.name = name->get<std::string>();
+      }
+      for (auto [key, out] : {std::pair{"x", &n.x}, std::pair{"y", &n.y}}) {
+        const Json* v = find(e, key);
+        if (!v || !v->is_number() || !std::isfinite(v->get<double>()) || std::abs(v->get<double>()) > kMaxCoordinate)
+          bad(at("nodes", i, key), "a finite coordinate");
+        *out = v->get<double>();
+      }
+      p.nodes.push_back(std::move(n));
+    }
+  }
+  if (const Json* edges = elements("edges", "an array of {\"from\", \"to\", \"type\"}")) {
+    for (size_t i = 0; i < edges->size(); ++i) {
+      const Json& e = (*edges)[i];
+      PathEdge d;
+      d.from = id_of(e, "edges", i, "from");
+      d.to = id_of(e, "edges", i, "to");
+      const Json* type = find(e, "type");
+      if (!type || !type->is_string()) bad(at("edges", i, "type"), "a string");
+      d.type = type->get<std::string>();
+      p.edges.push_back(std::move(d));
+    }
+  }
   return p;
 }
 

@@ -96,7 +96,30 @@ struct SetMapParams {
   std::optional<double> laser_height;
   std::optional<MapMode> mode;
 };
-struct SetPathParams { std::vector<Point> waypoints; double length = 0; };
+// SetPath (SPEC 5.2) with the topological route it follows, when GetPath planned through
+// the map's graph (docs/protocol.md, "SetPath: nodes and edges"): the graph nodes in
+// route order and the edges between them, edges[i] joining nodes[i] and nodes[i + 1].
+// Both absent (empty) for a whole-map RRT path; written only when set, and a robot that
+// does not know them ignores them (decoders skip unknown keys). The edge type is kept as
+// text ("corridor", "room", "door", "stairs", "elevator", common/planning/topo_graph.h)
+// so that a type added later does not make an older robot refuse the whole path.
+struct PathNode {
+  int id = 0;
+  std::string name;  // "" when the node has none
+  double x = 0, y = 0;
+  friend bool operator==(const PathNode&, const PathNode&) = default;
+};
+struct PathEdge {
+  int from = 0, to = 0;
+  std::string type;
+  friend bool operator==(const PathEdge&, const PathEdge&) = default;
+};
+struct SetPathParams {
+  std::vector<Point> waypoints;
+  double length = 0;
+  std::vector<PathNode> nodes;
+  std::vector<PathEdge> edges;
+};
 struct SetPoseParams { double x = 0, y = 0; std::optional<double> theta; };
 struct ErrorParams { std::optional<unsigned long long> request_id; ErrorCode code = ErrorCode::Internal; std::string message; };
 

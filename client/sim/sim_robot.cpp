@@ -139,6 +139,8 @@ void SimRobot::handle(const ReceivedAnswer& a) {
     const SetPathParams p = decode_set_path(a.params);
     spdlog::info("path of {} waypoints, {:.1f} m", p.waypoints.size(), p.length);
     pursuit_.set_path(p.waypoints);
+    route_ = RouteEdges(p);
+    if (!route_.empty()) spdlog::info("route through {} graph nodes, {} edges", p.nodes.size(), p.edges.size());
     moving_ = true;
     path_request_.reset();
   } else if (a.op == "Error" && a.request_id == path_request_ && goal_ && a.params.value("code", "") == "no_pose" &&
@@ -161,6 +163,7 @@ void SimRobot::handle(const ReceivedAnswer& a) {
   } else if (a.op == "Abort") {
     spdlog::warn("abort: {}", a.params.value("reason", ""));
     pursuit_.clear();
+    route_ = RouteEdges();
     goal_.reset();
     stopped();
   } else if (a.op == "Error") {
@@ -176,6 +179,13 @@ void SimRobot::run(const std::atomic<bool>& stop, double duration_s) {
     for (const ReceivedAnswer& a : client_.receive()) handle(a);
     const loc::PoseEstimate e = filter_->estimate();
     const Command c = moving_ ? pursuit_.command(e.pose) : Command{0, 0, false};
+    // The hook for per-edge behaviour (seed 003 §II-B): a real robot switches its
+    // controller (corridor following, door passing); the simulated one says so.
+    if (moving_)
+      if (const std::optional<size_t> k = route_.update(e.pose.point())) {
+        const PathEdge& edge = route_.edge(*k);
+        spdlog::info("on a {} edge, node {} -> {}", edge.type, edge.from, edge.to);
+      }
     if (moving_ && c.arrived) {
       spdlog::info("arrived at ({:.2f}, {:.2f}); truth ({:.2f}, {:.2f})", e.pose.x, e.pose.y, drive_.pose().x,
                    drive_.pose().y);

@@ -13,6 +13,7 @@
 #include "client/localization/lost_detector.h"
 #include "client/localization/particle_filter.h"
 #include "client/robot_client.h"
+#include "client/route_edges.h"
 #include "client/sim/differential_drive.h"
 #include "client/sim/pure_pursuit.h"
 #include "client/zoom_map_client.h"
@@ -81,6 +82,7 @@ class SimRobot {
   bool localizing_ = false;  // lost and not localized again yet
   size_t relocalizations_ = 0;
   PurePursuit pursuit_;
+  RouteEdges route_;  // the path's topological edges, when GetPath went through the graph
   std::unique_ptr<ZoomMapClient> zoom_;
   std::mt19937_64 rng_;
   Map map_;  // the map the filter works on: the whole map or the current window

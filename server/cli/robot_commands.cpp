@@ -28,6 +28,7 @@
 #include "server/cli/gis_export.h"
 #include "server/cli/goal_near_command.h"
 #include "server/cli/map_source.h"
+#include "server/core/goal_by_node.h"
 #include "server/core/goal_check.h"
 
 namespace fleetmap {
@@ -334,16 +335,36 @@ void add_robots(CLI::App& app, CliContext& ctx) {
   run_with(*cmd, a, ctx, run_robots);
 }
 
-// goal ROBOT X Y | goal ROBOT --near TAG: a task; the server pushes SetPosEnd.
+// goal ROBOT X Y | goal ROBOT --near TAG | goal ROBOT --node WHAT: a task; the server
+// pushes SetPosEnd.
 struct GoalArgs {
   std::string robot;
   std::vector<double> xy;
   GoalNearArgs near;
+  std::string node;  // --node: a graph node's name, else a node type (server/core/goal_by_node.h)
 };
 
+// --node WHAT: the node named WHAT, else the nearest node of that type; refused (exit 3)
+// when there is none or the robot cannot reach it.
+int assign_goal_at_node(CliContext& ctx, const GoalArgs& a) {
+  const AcceptedGoalByNode g =
+      accept_goal_by_node(ctx.connection(), ctx.connection(), a.robot, a.node, planning_defaults(ctx.config_path()));
+  const TopoNode& n = g.node;
+  std::printf("task %llu assigned to '%s': goal node %d%s (%g, %g)", g.goal.task, a.robot.c_str(), n.id,
+              n.name.empty() ? "" : (" '" + n.name + "'").c_str(), n.pos.x, n.pos.y);
+  if (g.goal.check.from)
+    std::printf("; path %.2f m from (%.3f, %.3f)\n", g.goal.check.path_length, g.goal.check.from->x,
+                g.goal.check.from->y);
+  else
+    std::printf("; the robot has no known position yet: only the goal's place was checked\n");
+  return exit_code::kOk;
+}
+
 int run_goal(const GoalArgs& a, CliContext& ctx) {
-  if (a.xy.empty() == a.near.tag.empty()) throw CLI::ValidationError("expected X Y or --near TAG (one of them)");
+  if (int(!a.xy.empty()) + int(!a.near.tag.empty()) + int(!a.node.empty()) != 1)
+    throw CLI::ValidationError("expected X Y, --near TAG or --node WHAT (one of them)");
   if (!a.near.tag.empty()) return assign_goal_near(ctx, a.robot, a.near);
+  if (!a.node.empty()) return assign_goal_at_node(ctx, a);
   finite({a.xy[0], a.xy[1]});
   // Refused at once when the robot cannot reach it (GoalRefused: exit 3, no task).
   const AcceptedGoal g =
@@ -361,16 +382,22 @@ void add_goal(CLI::App& app, CliContext& ctx) {
   auto a = std::make_shared<GoalArgs>();
   auto* cmd = app.add_subcommand("goal", "assign a task: the server pushes SetPosEnd to the robot");
   cmd->add_option("ROBOT", a->robot, "robot name")->required();
-  cmd->add_option("XY", a->xy, "X Y: the goal (m); or --near TAG")->expected(2);
+  cmd->add_option("XY", a->xy, "X Y: the goal (m); or --near TAG, or --node WHAT")->expected(2);
   add_goal_near_options(*cmd, a->near);
+  cmd->add_option("--node", a->node,
+                  "a node of the map's topological graph: by name (\"room 2.302\"), else the nearest node of that "
+                  "type (corridor, room, door, stairs, elevator) to the robot")
+      ->type_name("WHAT");
   cmd->footer("A goal X Y is refused at once, and no task is created, when it is outside the map, inside an "
               "obstacle, an object the robot's body cannot pass or an avoided area, or unreachable from the robot's "
               "last pose (or initial pose) with the server's planner for its profile; a lost robot's goals are "
               "refused too (give them again once it reports). Without a known position only the goal's place is "
               "checked. With --near TAG the goal is a free point beside the nearest object with that tag, reachable "
-              "the same way (docs/semantic-layer.md). Exit codes: 0 assigned, 2 bad value, 3 refused (no path, "
-              "goal blocked or outside the map, robot lost; with --near: no free reachable point beside the object), "
-              "4 no such robot, no object with the tag, or (--near) no known position, 64 usage.");
+              "the same way (docs/semantic-layer.md). With --node the goal is a node of the robot's map's "
+              "topological graph, reachable the same way. Exit codes: 0 assigned, 2 bad value, 3 refused (no path, "
+              "goal blocked or outside the map, robot lost; with --near: no free reachable point beside the object; "
+              "with --node: no node of that name or type), 4 no such robot, no object with the tag, (--near) no "
+              "known position, (--node) no map or no graph, 64 usage.");
   run_with(*cmd, a, ctx, run_goal);
 }
 

@@ -7,10 +7,12 @@
 #include "common/geometry/number_format.h"
 #include "common/geometry/polygon.h"
 #include "common/planning/planning_scene.h"
+#include "common/planning/topo_planner.h"
 #include "protocol/db_settings.h"
 #include "protocol/fleet_store.h"
 #include "protocol/live_scene.h"
 #include "protocol/map_store.h"
+#include "protocol/topo_store.h"
 
 namespace fleetmap {
 namespace {
@@ -85,7 +87,7 @@ const Obstacle* enclosing_obstacle(const Map& map, Point p) {
 }
 
 GoalAcceptance check_goal_on(const MapPlanner& planner, const Map& m, const std::string& robot,
-                             const std::string& map, std::optional<Point> from, Point goal) {
+                             const std::string& map, std::optional<Point> from, Point goal, const TopoGraph* graph) {
   const std::string refused = "goal " + point(goal) + " for robot '" + robot + "' refused: ";
   const Rect border = m.border.rect();
   if (!border.contains(goal))
@@ -114,6 +116,14 @@ GoalAcceptance check_goal_on(const MapPlanner& planner, const Map& m, const std:
     case PlanStatus::GoalBlocked:  // checked above; kept for a planner that is stricter
       throw GoalRefused(refused + "it is blocked");
     case PlanStatus::NoPath:
+      // RRT-Connect gave up (its time limit on a long trip over a dense floor,
+      // docs/benchmarks.md): the map's graph, as GetPath would use it, may still get there.
+      if (graph && !graph->empty())
+        if (const TopoPlanResult t = TopoPlanner(planner, *graph).plan(*from, goal); t.path) {
+          a.from = from;
+          a.path_length = t.length;
+          return a;
+        }
       break;
   }
   throw GoalRefused(refused + "no path from the robot's position " + point(*from) + " for its radius " +
@@ -132,7 +142,12 @@ GoalAcceptance check_goal(mysqlpp::Connection& c, const std::string& robot, Poin
   const Map map = MapStore(c).load(w.map);
   const Scene scene = load_live_scene(c, *w.map_id);
   const MapPlanner planner(map, planning_obstacles(map, scene, profile.body_height, options.robot), options);
-  return check_goal_on(planner, map, robot, w.map, w.known_position(), goal);
+  std::optional<TopoGraph> graph;
+  try {
+    graph = TopoStore(c).load(w.map);
+  } catch (const TopoGraphNotFound&) {  // no graph: whole-map RRT only
+  }
+  return check_goal_on(planner, map, robot, w.map, w.known_position(), goal, graph ? &*graph : nullptr);
 }
 
 AcceptedGoal accept_goal(mysqlpp::Connection& c, const std::string& robot, Point goal, const ServerConfig& defaults) {

@@ -26,6 +26,7 @@
 #include "common/geometry/geometry.h"
 #include "common/core/error.h"
 #include "common/planning/map_planner.h"
+#include "common/planning/topo_graph.h"
 #include "protocol/robot_whereabouts.h"
 #include "server/core/planner_cache.h"
 #include "server/core/server_config.h"
@@ -58,9 +59,12 @@ ServerConfig planning_defaults(const std::optional<std::string>& config_file);
 // Step 1: throws GoalRefused when the robot is lost; `goal` names the goal ("goal (1, 2)").
 void refuse_if_lost(const RobotWhereabouts& w, const std::string& robot, const std::string& goal);
 
-// Steps 2-4 on a planner already built (no database): throws GoalRefused.
+// Steps 2-4 on a planner already built (no database): throws GoalRefused. With the map's
+// topological graph, a goal whole-map RRT does not reach is tried through the graph too
+// (common/planning/topo_planner.h), as GetPath may plan it.
 GoalAcceptance check_goal_on(const MapPlanner& planner, const Map& map, const std::string& robot,
-                             const std::string& map_name, std::optional<Point> from, Point goal);
+                             const std::string& map_name, std::optional<Point> from, Point goal,
+                             const TopoGraph* graph = nullptr);
 
 // The closed obstacle (ST 1 or 3) whose every segment blocks (h > 0) and whose inside
 // holds p, or nullptr.

@@ -50,6 +50,7 @@ void ServerConfig::apply(const std::map<std::string, std::string>& s) {
     else if (k == "goal_tolerance_m") goal_tolerance_m = positive(k, v);
     else if (k == "robot_radius_m") robot_radius_m = positive(k, v);
     else if (k == "body_height_m") body_height_m = positive(k, v);
+    else if (k == "topo_path_min_m") topo_path_min_m = number(k, v, true);
     else if (k == "object_ttl_s") object_ttl_s = positive(k, v);
     else if (k == "commit_delay_ms") commit_delay_ms = number(k, v, true);
     else if (k == "robot_block_ms") robot_block_ms = positive(k, v);

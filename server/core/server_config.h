@@ -20,6 +20,10 @@ struct ServerConfig {
   double goal_tolerance_m = 0.5;      // Stopped within this of the goal -> task done
   double robot_radius_m = 0.3;        // GetPath plans for a disc of this radius (robots without a profile)
   double body_height_m = 1.0;         // elements starting below this block robots without a profile
+  // GetPath plans through the map's topological graph when start and goal are at least
+  // this far apart (straight line) and the map has one; 0: always. bench-topo-path,
+  // docs/benchmarks.md ("GetPath through the graph") for the figures behind 60.
+  double topo_path_min_m = 60;
   double object_ttl_s = 300;          // SetObject: an observation expires this long after its last sighting
   int lock_wait_timeout_s = 1;        // then find and end the robot connection that blocks
   double robot_block_ms = 2000;       // a robot blocking another robot this long is ended (SPEC 5.3)

@@ -56,4 +56,9 @@ std::shared_ptr<const MapPlanner> DbRobotMaps::planner(const MapInfo& info, cons
   return planners_.get(cache_, store_, info, profile, scene(info.id));
 }
 
+std::shared_ptr<const TopoGraph> DbRobotMaps::topo_graph(const MapInfo& info) {
+  TopoStore topo(store_.connection());
+  return graphs_.get(topo, info.name);
+}
+
 }  // namespace fleetmap

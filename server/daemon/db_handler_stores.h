@@ -13,6 +13,7 @@
 #include "protocol/robot_store.h"
 #include "server/core/map_cache.h"
 #include "server/core/planner_cache.h"
+#include "server/core/topo_cache.h"
 #include "server/daemon/handlers/handler_stores.h"
 
 namespace fleetmap {
@@ -40,18 +41,20 @@ class DbRobotRecords : public RobotRecords {
 
 class DbRobotMaps : public RobotMaps {
  public:
-  DbRobotMaps(mysqlpp::Connection& c, MapCache& cache, PlannerCache& planners)
-      : store_(c), cache_(cache), planners_(planners) {}
+  DbRobotMaps(mysqlpp::Connection& c, MapCache& cache, PlannerCache& planners, TopoCache& graphs)
+      : store_(c), cache_(cache), planners_(planners), graphs_(graphs) {}
 
   std::optional<MapInfo> info(unsigned map_id) override;
   Map robot_map(const MapInfo& info, const std::optional<Rect>& window, std::optional<double> laser_height) override;
   std::shared_ptr<const Scene> scene(unsigned map_id) override;
   std::shared_ptr<const MapPlanner> planner(const MapInfo& info, const PlannerProfile& profile) override;
+  std::shared_ptr<const TopoGraph> topo_graph(const MapInfo& info) override;
 
  private:
   MapStore store_;
   MapCache& cache_;
   PlannerCache& planners_;
+  TopoCache& graphs_;
   std::map<unsigned, std::optional<MapInfo>> infos_;
 };
 

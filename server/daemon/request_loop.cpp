@@ -79,12 +79,13 @@ class WriteBatchSink : public BatchSink {
 
 }  // namespace
 
-RequestLoop::RequestLoop(DbSettings db, const ServerConfig& config, MapCache& cache, PlannerCache& planners,
+RequestLoop::RequestLoop(DbSettings db, const ServerConfig& config, MapCache& cache, PlannerCache& planners, TopoCache& graphs,
                          const std::atomic<bool>& stop, int worker, bool housekeeping)
     : db_(std::move(db)),
       config_(config),
       cache_(cache),
       planners_(planners),
+      graphs_(graphs),
       stop_(stop),
       worker_(worker),
       housekeeping_(housekeeping) {}
@@ -241,7 +242,7 @@ size_t RequestLoop::serve(bool careful) {
   WriteBatch batch(*conn_, multi_statements_);
   WriteBatchSink sink(batch, careful);
   DbRobotRecords records(*conn_);
-  DbRobotMaps maps(*conn_, cache_, planners_);
+  DbRobotMaps maps(*conn_, cache_, planners_, graphs_);
   serve_requests(
       served, reqs, [&](ServedRobot& s, const Request& req) { return handle(s, req, records, maps, careful); }, sink);
   if (config_.commit_delay_ms > 0)

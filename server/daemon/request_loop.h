@@ -23,6 +23,7 @@
 #include "protocol/write_batch.h"
 #include "server/core/map_cache.h"
 #include "server/core/planner_cache.h"
+#include "server/core/topo_cache.h"
 #include "server/core/server_config.h"
 #include "server/daemon/handlers/handler.h"
 #include "server/daemon/housekeeping.h"
@@ -31,7 +32,7 @@ namespace fleetmap {
 
 class RequestLoop {
  public:
-  RequestLoop(DbSettings db, const ServerConfig& config, MapCache& cache, PlannerCache& planners,
+  RequestLoop(DbSettings db, const ServerConfig& config, MapCache& cache, PlannerCache& planners, TopoCache& graphs,
               const std::atomic<bool>& stop, int worker, bool housekeeping);
   void run();  // until stop is set; finishes the transaction in hand first
 
@@ -50,6 +51,7 @@ class RequestLoop {
   const ServerConfig& config_;
   MapCache& cache_;
   PlannerCache& planners_;
+  TopoCache& graphs_;
   const std::atomic<bool>& stop_;
   int worker_;
   bool housekeeping_;

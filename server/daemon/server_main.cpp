@@ -82,9 +82,10 @@ int main(int argc, char** argv) {
     spdlog::info("fleetmap-server starting: {} worker(s), database {}", cfg.workers, describe(db));
     MapCache cache;
     PlannerCache planners;
+    TopoCache graphs;  // the maps' topological graphs, for GetPath
     std::vector<std::thread> workers;
     for (int i = 0; i < cfg.workers; ++i)
-      workers.emplace_back([&, i] { RequestLoop(db, cfg, cache, planners, g_stop, i, i == 0).run(); });
+      workers.emplace_back([&, i] { RequestLoop(db, cfg, cache, planners, graphs, g_stop, i, i == 0).run(); });
     workers.emplace_back([&] { StallGuard(db, g_stop, std::chrono::milliseconds(250),
                                                   std::chrono::duration<double, std::milli>(cfg.robot_block_ms))
                                            .run(); });

@@ -431,6 +431,50 @@ TEST(SetPathParamsCodec, Errors) {
   expect_not_object_is_bad_json(decode_set_path, "SetPath");
 }
 
+// The route GetPath followed through the topological graph (docs/protocol.md, "SetPath:
+// nodes and edges"): written only when set, read back, and unknown keys ignored.
+TEST(SetPathParamsCodec, NodesAndEdges) {
+  SetPathParams p;
+  p.waypoints = {{0, 0}, {5, 0}};
+  p.length = 5;
+  p.nodes = {{3, "room 2.302", 1.5, -2}, {7, "", 4, 0.25}};
+  p.edges = {{3, 7, "door"}};
+  const Json j = encode(p);
+  EXPECT_EQ(j, J(R"({"waypoints": [[0, 0], [5, 0]], "length": 5,
+                    "nodes": [{"id": 3, "name": "room 2.302", "x": 1.5, "y": -2},
+                              {"id": 7, "name": "", "x": 4, "y": 0.25}],
+                    "edges": [{"from": 3, "to": 7, "type": "door"}]})"));
+  const SetPathParams q = decode_set_path(parse_params(j.dump()));
+  EXPECT_EQ(q.nodes, p.nodes);
+  EXPECT_EQ(q.edges, p.edges);
+  // A whole-map RRT path has neither key.
+  EXPECT_FALSE(encode(SetPathParams{{{0, 0}}, 0, {}, {}}).contains("nodes"));
+  EXPECT_FALSE(encode(SetPathParams{{{0, 0}}, 0, {}, {}}).contains("edges"));
+  // A newer server's extra keys, and a type this robot does not know, do not refuse the path.
+  const SetPathParams n = decode_set_path(J(R"({"waypoints": [[1, 2]], "length": 0, "lanes": 3,
+      "nodes": [{"id": 1, "x": 1, "y": 2, "floor": 2}], "edges": [{"from": 1, "to": 2, "type": "ramp", "w": 1}]})"));
+  ASSERT_EQ(n.nodes.size(), 1u);
+  EXPECT_EQ(n.nodes[0].name, "");
+  ASSERT_EQ(n.edges.size(), 1u);
+  EXPECT_EQ(n.edges[0].type, "ramp");
+}
+
+TEST(SetPathParamsCodec, NodeAndEdgeErrorsNameTheElement) {
+  expect_bad_params(decode_set_path, R"({"waypoints": [], "length": 0, "nodes": {}})", "nodes");
+  expect_bad_params(decode_set_path, R"({"waypoints": [], "length": 0, "nodes": [1]})", "nodes");
+  expect_bad_params(decode_set_path, R"({"waypoints": [], "length": 0, "nodes": [{"id": 1, "x": 1, "y": 1},
+      {"id": -1, "x": 1, "y": 1}]})", "nodes[1].id");
+  expect_bad_params(decode_set_path, R"({"waypoints": [], "length": 0, "nodes": [{"id": 1, "x": "1", "y": 1}]})",
+                    "nodes[0].x");
+  expect_bad_params(decode_set_path, R"({"waypoints": [], "length": 0, "nodes": [{"id": 1, "x": 1}]})", "nodes[0].y");
+  expect_bad_params(decode_set_path, R"({"waypoints": [], "length": 0, "nodes": [{"id": 1, "name": 2, "x": 1, "y": 1}]})",
+                    "nodes[0].name");
+  expect_bad_params(decode_set_path, R"({"waypoints": [], "length": 0, "edges": [{"from": 1, "to": 2.5, "type": "door"}]})",
+                    "edges[0].to");
+  expect_bad_params(decode_set_path, R"({"waypoints": [], "length": 0, "edges": [{"from": 1, "to": 2}]})",
+                    "edges[0].type");
+}
+
 TEST(SetPoseParamsCodec, RoundTripWithAndWithoutTheta) {
   const SetPoseParams with{3, 4, 1.5};
   Json j = encode(with);

@@ -5,11 +5,45 @@
 // RRT-Connect + smoothing. The task becomes active (TaskEvent::PathPlanned). No path:
 // the task fails with the reason (TaskEvent::NoPath), and the answer is the no_path Error,
 // so that the robot stops instead of guessing a way (client/sim/sim_robot.cpp).
+//
+// Through the topological graph (seed 003 §II, common/planning/topo_planner.h) when the
+// map has one and start and goal are at least topo_path_min_m apart: the answer then
+// carries the route's nodes and edges too (docs/protocol.md, "SetPath: nodes and
+// edges"), for per-edge behaviour. When the graph gives no path (no route for this
+// robot, a leg RRT-Connect did not find), whole-map RRT as below.
 #include <stdexcept>
 
+#include "common/planning/topo_planner.h"
 #include "server/daemon/handlers/handler.h"
 
 namespace fleetmap {
+namespace {
+
+// The route in travel order: edges[i] goes from nodes[i] to nodes[i + 1], whatever way
+// round the graph stores it.
+SetPathParams with_route(const TopoGraph& g, const TopoPlanResult& r) {
+  SetPathParams p{*r.path, r.length, {}, {}};
+  for (int id : r.route.nodes) {
+    const TopoNode& n = g.node(id);
+    p.nodes.push_back({n.id, n.name, n.pos.x, n.pos.y});
+  }
+  for (size_t i = 0; i < r.route.edges.size(); ++i)
+    p.edges.push_back({r.route.nodes[i], r.route.nodes[i + 1], std::string(to_string(g.edges()[r.route.edges[i]].type))});
+  return p;
+}
+
+// The graph's path, when the distance rule asks for it and the graph gives one.
+std::optional<SetPathParams> through_graph(HandlerContext& ctx, const MapInfo& info, const MapPlanner& planner,
+                                           Point start, Point goal) {
+  if (distance(start, goal) < ctx.config.topo_path_min_m) return std::nullopt;
+  const std::shared_ptr<const TopoGraph> graph = ctx.maps.topo_graph(info);
+  if (!graph || graph->empty()) return std::nullopt;
+  const TopoPlanResult r = TopoPlanner(planner, *graph).plan(start, goal);
+  if (!r.path) return std::nullopt;
+  return with_route(*graph, r);
+}
+
+}  // namespace
 
 void handle_get_path(HandlerContext& ctx) {
   decode_empty(ctx.params);
@@ -25,7 +59,13 @@ void handle_get_path(HandlerContext& ctx) {
   } catch (const std::invalid_argument& e) {  // a footprint the planner cannot take
     throw ProtocolError(ErrorCode::NoPlanner, std::string("cannot plan on this map: ") + e.what());
   }
-  const PlanResult r = planner->plan({*ctx.robot.x, *ctx.robot.y}, {task->goal_x, task->goal_y});
+  const Point start{*ctx.robot.x, *ctx.robot.y}, goal{task->goal_x, task->goal_y};
+  if (std::optional<SetPathParams> p = through_graph(ctx, info, *planner, start, goal)) {
+    ctx.answer(AnswerOp::SetPath, encode(*p));
+    ctx.task_event(*task, TaskEvent::PathPlanned);
+    return;
+  }
+  const PlanResult r = planner->plan(start, goal);
   if (!r.path) {
     std::string why = std::string(to_string(r.status));
     const auto& names = planner->checker().obstacles().names;

@@ -13,6 +13,7 @@
 
 #include "common/map/map.h"
 #include "common/planning/map_planner.h"
+#include "common/planning/topo_graph.h"
 #include "common/scene/scene.h"
 #include "protocol/fleet_states.h"
 #include "protocol/map_store.h"
@@ -63,6 +64,8 @@ class RobotMaps {
   // The planner of the map for this profile with its live scene. Throws
   // std::invalid_argument for a scene or footprint the planner cannot take.
   virtual std::shared_ptr<const MapPlanner> planner(const MapInfo& info, const PlannerProfile& profile) = 0;
+  // The map's topological graph (server/core/topo_cache.h), or nullptr when it has none.
+  virtual std::shared_ptr<const TopoGraph> topo_graph(const MapInfo& info) = 0;
 };
 
 }  // namespace fleetmap

@@ -3,20 +3,17 @@
 // person's own connection (ctx.writer(): the database's grants decide, SPEC 4):
 //   goal {"x","y"}   accept_goal (server/core/goal_check.h), as `fleetmap goal R X Y`
 //   goal {"tag"}     accept_goal_by_tag (server/core/goal_by_tag.h), as `--near TAG`
-//   goal {"node"}    a node of the robot's map's topological graph (topology_json.h),
-//                    then accept_goal at its position
+//   goal {"node"}    accept_goal_by_node (server/core/goal_by_node.h), as `--node WHAT`
 //   pose             FleetStore::set_initial_pose, as `fleetmap pose-ini`
 //   abort            FleetStore::request_abort, as `fleetmap abort`
 // A refused goal is 422 goal_refused with accept_goal's message, and no task row exists.
 #include "protocol/fleet_store.h"
-#include "protocol/robot_whereabouts.h"
-#include "protocol/topo_store.h"
+#include "server/core/goal_by_node.h"
 #include "server/core/goal_by_tag.h"
 #include "server/core/goal_check.h"
 #include "server/web/api/fleet_json.h"
 #include "server/web/api/request_fields.h"
 #include "server/web/api/route_groups.h"
-#include "server/web/api/topology_json.h"
 
 namespace fleetmap::web {
 namespace {
@@ -44,19 +41,19 @@ ApiResponse created(unsigned long long task, const std::string& robot, Point goa
   return r;
 }
 
-// {"node": what}: the node is found on the web account's reads (the robot's map, its
-// graph), the goal is given on the person's own connection.
+// {"node": what}: accept_goal_by_node (server/core/goal_by_node.h, as `fleetmap goal
+// --node`): the node is found on the web account's reads (the robot's map, its graph),
+// the goal is given on the person's own connection. No such node is a 404 here (a name
+// that does not resolve, like an unknown tag), where the CLI exits 3.
 ApiResponse goal_at_node(const std::string& robot, const std::string& what, ApiContext& ctx) {
-  const RobotWhereabouts w = robot_whereabouts(ctx.reader(), robot);  // RobotNotFound: 404
-  if (w.map.empty()) throw NotFound("robot '" + robot + "' has no map");
-  const TopoGraph graph = TopoStore(ctx.reader()).load(w.map);  // TopoGraphNotFound: 404
-  const TopoNode* node = find_goal_node(graph, what, w.known_position());
-  if (!node)
-    throw NotFound("no node named '" + what + "' and none of that type in the topological graph of map '" + w.map +
-                   "' (node types: corridor, room, door, stairs, elevator)");
-  const AcceptedGoal g = accept_goal(ctx.writer(), robot, node->pos, ctx.planning_defaults());
-  ApiResponse r = created(g.task, robot, node->pos, g.check.from, g.check.path_length);
-  r.body["node"] = node->id;
+  AcceptedGoalByNode g;
+  try {
+    g = accept_goal_by_node(ctx.reader(), ctx.writer(), robot, what, ctx.planning_defaults());
+  } catch (const NoGoalNode& e) {
+    throw NotFound(e.what());
+  }
+  ApiResponse r = created(g.goal.task, robot, g.node.pos, g.goal.check.from, g.goal.check.path_length);
+  r.body["node"] = g.node.id;
   return r;
 }
 

@@ -156,5 +156,24 @@ TEST(GoalCheck, TheProfileFallsBackToTheServersDefaults) {
   EXPECT_TRUE(p.can_climb_stairs);
 }
 
+// With the map's graph, a goal that whole-map RRT-Connect gives up on (here: one
+// iteration allowed) is accepted when the graph reaches it: the gap's node is in sight of
+// both ends, so no RRT leg is needed. Without the graph the same goal is refused.
+TEST_F(GoalCheckTest, AGoalRrtGivesUpOnIsAcceptedThroughTheGraph) {
+  const PlannerProfile profile{0.3, 1.0, false};
+  PlannerOptions o = server_planner_options(profile);
+  o.rrt.max_iterations = 1;
+  o.attempts = 1;
+  const MapPlanner weak(map, planning_obstacles(map, scene, profile.body_height, o.robot), o);
+  TopoGraph g;
+  g.add_node({1, {10, 5}, "gap"});
+  const Point from{5, 2}, goal{15, 6};
+  EXPECT_THROW(check_goal_on(weak, map, "r1", "gap", from, goal), GoalRefused);
+  const GoalAcceptance a = check_goal_on(weak, map, "r1", "gap", from, goal, &g);
+  ASSERT_TRUE(a.from);
+  // Through the gap: at least the way via (10, 5) with the corners cut by the radius.
+  EXPECT_GT(a.path_length, std::hypot(5, 3) + std::hypot(5, 1) - 0.7);
+}
+
 }  // namespace
 }  // namespace fleetmap

@@ -39,6 +39,7 @@ TEST(ServerConfig, DefaultsAreTheDocumentedOnes) {
   EXPECT_EQ(c.goal_tolerance_m, 0.5);
   EXPECT_EQ(c.robot_radius_m, 0.3);
   EXPECT_EQ(c.body_height_m, 1.0);
+  EXPECT_EQ(c.topo_path_min_m, 60);
   EXPECT_EQ(c.object_ttl_s, 300);
   EXPECT_EQ(c.lock_wait_timeout_s, 1);
   EXPECT_EQ(c.commit_delay_ms, 0);
@@ -92,7 +93,8 @@ TEST(ServerConfig, EveryKeyOfTheFileIsApplied) {
            {"max_full_map_segments", "500"}, {"ready_window_m", "50"},   {"max_window_m", "200"},
            {"max_image_bytes", "1024"},   {"goal_tolerance_m", "0.25"},  {"robot_radius_m", "0.4"},
            {"body_height_m", "1.5"},      {"object_ttl_s", "60"},        {"lock_wait_timeout_s", "2"},
-           {"commit_delay_ms", "0"},      {"robot_block_ms", "500"}});
+           {"commit_delay_ms", "0"},      {"robot_block_ms", "500"},
+           {"topo_path_min_m", "0"}});
   EXPECT_EQ(c.alive_period_s, 0.5);
   EXPECT_EQ(c.lost_after_periods, 3);
   EXPECT_EQ(c.workers, 4);
@@ -110,6 +112,7 @@ TEST(ServerConfig, EveryKeyOfTheFileIsApplied) {
   EXPECT_EQ(c.lock_wait_timeout_s, 2);
   EXPECT_EQ(c.commit_delay_ms, 0);
   EXPECT_EQ(c.robot_block_ms, 500);
+  EXPECT_EQ(c.topo_path_min_m, 0);
 }
 
 TEST(ServerConfig, FlagsAppliedAfterTheFileOverrideItAndLeaveTheRest) {

@@ -130,7 +130,12 @@ class FakeMaps : public RobotMaps {
     m.compute_bounds();
     return std::make_shared<const MapPlanner>(m, server_planner_options(profile));
   }
+  std::shared_ptr<const TopoGraph> topo_graph(const MapInfo& info) override {
+    auto it = graphs.find(info.id);
+    return it == graphs.end() ? nullptr : it->second;
+  }
   std::vector<PlannerProfile> profiles;  // every planner() call
+  std::map<unsigned, std::shared_ptr<const TopoGraph>> graphs;  // by map id
 };
 
 // A 20 m x 10 m map with one wall, 1 m high, from (10, 0) to (10, 6): a robot passes

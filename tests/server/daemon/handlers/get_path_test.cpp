@@ -1,6 +1,8 @@
 // GetPath (SPEC 5.2, 7): a path from the last pose to the open task's goal around the
 // map's obstacles, for the robot's profile; the task becomes active.
+#include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <gtest/gtest.h>
 
@@ -93,6 +95,73 @@ TEST_F(GetPathTest, AMapThePlannerCannotTakeIsNoPlanner) {
   const RequestWrites w = b.send("GetPath", "{}");
   ASSERT_EQ(error_code(w), "no_planner");
   EXPECT_NE(w.answers[0].params["message"].get<std::string>().find("obstacle 7"), std::string::npos);
+}
+
+// A graph over the room: west (5, 8) and east (15, 8), one edge above the wall's end
+// (stored east to west). The robot at (5, 2) sees west, not east (the wall is in the way);
+// the goal (15, 2) sees east.
+std::shared_ptr<const TopoGraph> room_graph(EdgeType type = EdgeType::Door) {
+  auto g = std::make_shared<TopoGraph>();
+  g->add_node({10, {5, 8}, "west"});
+  g->add_node({12, {15, 8}, "east"});
+  g->add_edge({.a = 12, .b = 10, .type = type});
+  return g;
+}
+
+// Distance from p to the wall's box (9.9..10.1 x 0..6), written here, not the planner's.
+double to_wall(double x, double y) {
+  const double dx = std::max({9.9 - x, 0.0, x - 10.1}), dy = std::max({0.0 - y, 0.0, y - 6.0});
+  return std::hypot(dx, dy);
+}
+
+// Every point of the polyline, sampled every centimetre, keeps the radius from the wall.
+double clearance(const Json& pts) {
+  double d = 1e9;
+  for (size_t i = 1; i < pts.size(); ++i) {
+    const double x0 = pts[i - 1][0].get<double>(), y0 = pts[i - 1][1].get<double>();
+    const double x1 = pts[i][0].get<double>(), y1 = pts[i][1].get<double>();
+    const int n = 1 + static_cast<int>(std::hypot(x1 - x0, y1 - y0) / 0.01);
+    for (int k = 0; k <= n; ++k) d = std::min(d, to_wall(x0 + (x1 - x0) * k / n, y0 + (y1 - y0) * k / n));
+  }
+  return d;
+}
+
+TEST_F(GetPathTest, FarEnoughAndWithAGraphTheAnswerCarriesTheRoute) {
+  b.maps.graphs[1] = room_graph();
+  b.config.topo_path_min_m = 5;  // the trip is 10 m
+  const RequestWrites w = b.send("GetPath", "{}");
+  ASSERT_EQ(w.answers.size(), 1u);
+  ASSERT_EQ(w.answers[0].op, AnswerOp::SetPath) << w.answers[0].params.dump();
+  const Json& p = w.answers[0].params;
+  EXPECT_EQ(p["nodes"], Json::parse(R"([{"id": 10, "name": "west", "x": 5, "y": 8},
+                                          {"id": 12, "name": "east", "x": 15, "y": 8}])"));
+  // In travel order, though the edge is stored the other way round.
+  EXPECT_EQ(p["edges"], Json::parse(R"([{"from": 10, "to": 12, "type": "door"}])"));
+  EXPECT_EQ(p["waypoints"].front(), Json::parse("[5, 2]"));
+  EXPECT_EQ(p["waypoints"].back(), Json::parse("[15, 2]"));
+  EXPECT_GT(clearance(p["waypoints"]), b.config.robot_radius_m - 0.005);
+  EXPECT_NEAR(p["length"].get<double>(), length(p["waypoints"]), 1e-6);
+  ASSERT_EQ(b.records.task_states.size(), 1u);
+  EXPECT_EQ(b.records.task_states[0], std::make_pair(3ull, TaskState::Active));
+}
+
+TEST_F(GetPathTest, ShortTripsNoGraphOrNoRouteArePlannedOnTheWholeMap) {
+  b.maps.graphs[1] = room_graph();
+  // The default rule: 10 m is too short for the graph.
+  Json p = b.send("GetPath", "{}").answers.at(0).params;
+  EXPECT_FALSE(p.contains("nodes")) << p.dump();
+  EXPECT_FALSE(p.contains("edges"));
+  // Far enough, but the graph's only edge is stairs and this robot is wheeled: whole-map RRT.
+  b.maps.graphs[1] = room_graph(EdgeType::Stairs);
+  b.config.topo_path_min_m = 0;
+  const RequestWrites w = b.send("GetPath", "{}");
+  ASSERT_EQ(w.answers.at(0).op, AnswerOp::SetPath);
+  p = w.answers[0].params;
+  EXPECT_FALSE(p.contains("nodes")) << p.dump();
+  EXPECT_GT(clearance(p["waypoints"]), b.config.robot_radius_m - 0.005);
+  // A map without a graph.
+  b.maps.graphs.clear();
+  EXPECT_FALSE(b.send("GetPath", "{}").answers.at(0).params.contains("nodes"));
 }
 
 TEST_F(GetPathTest, MalformedParamsGetBadJson) {
