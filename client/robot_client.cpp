@@ -30,6 +30,13 @@ std::chrono::steady_clock::duration from_ms(double ms) {
   return std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double, std::milli>(ms));
 }
 
+// A transaction the database rolled back whole, to be sent again: a deadlock, or on a
+// Galera cluster a certification conflict with a commit on another node (docs/galera.md).
+bool rolled_back(const mysqlpp::Exception& e) {
+  const auto* bq = dynamic_cast<const mysqlpp::BadQuery*>(&e);
+  return bq && bq->errnum() == 1213;
+}
+
 bool connection_error(const mysqlpp::Exception& e) {
   if (const auto* bq = dynamic_cast<const mysqlpp::BadQuery*>(&e)) return bq->errnum() >= 2000 && bq->errnum() < 3000;
   return dynamic_cast<const mysqlpp::ConnectionFailed*>(&e) != nullptr;
@@ -73,6 +80,11 @@ auto RobotClient::with_connection(F&& f) -> decltype(f(std::declval<RobotChannel
       RobotChannel ch(*conn_);
       return f(ch);
     } catch (const mysqlpp::Exception& e) {
+      if (rolled_back(e) && Clock::now() <= give_up) {
+        spdlog::debug("robot client: {}; sending it again", e.what());
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        continue;
+      }
       if (!connection_error(e) || Clock::now() > give_up) throw;
       spdlog::warn("robot client: connection lost ({}); retrying", e.what());
       conn_.reset();
@@ -97,19 +109,23 @@ void RobotClient::fetch() {
   last_poll_ = Clock::now();
   ++polls_;
   std::erase_if(due_, [&](const auto& d) { return last_poll_ - d.second > kForgetDue; });
+  // An answer counts as taken once its delete has committed, so that a statement retried
+  // (with_connection) reads again exactly the answers not yet taken.
+  std::vector<unsigned long long> acks;
   with_connection([&](RobotChannel& ch) {
     for (ReceivedAnswer& a : ch.answers(last_answer_, 1000)) {
+      ch.remove(a.id);
       last_answer_ = a.id;
       if (a.request_id) due_.erase(*a.request_id);
-      ch.remove(a.id);
       const std::optional<AnswerOp> op = parse_answer_op(a.op);
-      // Pushed operations are acknowledged at once: the server records that we took them.
-      if (!a.request_id && (op == AnswerOp::SetPosEnd || op == AnswerOp::Abort))
-        ch.send(RequestOp::OpAck, Json{{"answer_id", a.id}}, std::nullopt, robot_id_);
+      if (!a.request_id && (op == AnswerOp::SetPosEnd || op == AnswerOp::Abort)) acks.push_back(a.id);
       inbox_.push_back(std::move(a));
     }
     return 0;
   });
+  // Pushed operations are acknowledged at once: the server records that we took them.
+  for (unsigned long long id : acks)
+    with_connection([&](RobotChannel& ch) { return ch.send(RequestOp::OpAck, Json{{"answer_id", id}}, std::nullopt, robot_id_); });
 }
 
 std::vector<ReceivedAnswer> RobotClient::receive() {
