@@ -87,7 +87,7 @@ void handle_get_path(HandlerContext& ctx) {
     ctx.answer(AnswerOp::Error, encode(ErrorParams{ctx.request.id, ErrorCode::NoPath, message}));
     return;
   }
-  ctx.answer(AnswerOp::SetPath, encode(SetPathParams{*r.path, r.length}));
+  ctx.answer(AnswerOp::SetPath, encode(SetPathParams{*r.path, r.length, {}, {}}));  // no graph route
   ctx.task_event(*task, TaskEvent::PathPlanned);  // refused when already active
 }
 
