@@ -10,6 +10,7 @@ namespace {
 constexpr double kMaxCoordinate = 1e7;
 constexpr double kMaxSpeed = 1e3;  // m/s or rad/s: anything above is a unit error
 constexpr size_t kMaxTextBytes = 255;
+constexpr size_t kMaxImageFormatBytes = 32;  // images.format VARCHAR(32)
 
 [[noreturn]] void bad(const std::string& field, const std::string& what) {
   throw ProtocolError(ErrorCode::BadParams, "params." + field + ": expected " + what);
@@ -45,12 +46,13 @@ long long integer(const Json& j, const char* field) {
   return v->get<long long>();
 }
 
-std::string text(const Json& j, const char* field) {
+// max_bytes: the column's width (sql/10_schema.sql), so what decodes also stores.
+std::string text(const Json& j, const char* field, size_t max_bytes = kMaxTextBytes) {
   const Json* v = find(j, field);
   if (!v) bad(field, "a string, got nothing");
   if (!v->is_string()) bad(field, "a string, got " + std::string(v->type_name()));
   std::string s = v->get<std::string>();
-  if (s.empty() || s.size() > kMaxTextBytes) bad(field, "a string of 1-255 bytes");
+  if (s.empty() || s.size() > max_bytes) bad(field, "a string of 1-" + std::to_string(max_bytes) + " bytes");
   return s;
 }
 
@@ -148,7 +150,7 @@ SendImageParams decode_send_image(const Json& j) {
   p.x = number(j, "x");
   p.y = number(j, "y");
   if (const Json* v = find(j, "object_id"); v && !v->is_null()) p.object_id = integer(j, "object_id");
-  p.format = text(j, "format");
+  p.format = text(j, "format", kMaxImageFormatBytes);
   return p;
 }
 

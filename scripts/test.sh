@@ -13,8 +13,9 @@
 #
 #   FLEETMAP_BUILD_DIR       stage 1 build folder (default: build)
 #   FLEETMAP_ASAN_BUILD_DIR  stage 2 build folder (default: build-asan)
-#   FLEETMAP_TEST_DB_PORT    stage 1 test database port (default: 33307)
-#   FLEETMAP_ASAN_DB_PORT    stage 2 test database port (default: 33308)
+#   FLEETMAP_TEST_DB_PORT    stage 1 test database port (default: 33307; the second
+#                            instance on that + 10)
+#   FLEETMAP_ASAN_DB_PORT    stage 2 test database port (default: 33308; + 10 likewise)
 #   FLEETMAP_MAPS_DIR        the real maps; when set, checked and configured as the
 #                            build's folder (otherwise the one configured, ../shared/maps)
 # Warnings fail the build when CI=true (FLEETMAP_WERROR, cmake/sanitizers.cmake), in both
@@ -38,13 +39,15 @@ fi
 stamp() { date +%s; }
 took() { echo "test.sh: $1 took $(( $(stamp) - $2 )) s"; }
 
-# run_suite BUILD_DIR PORT [ctest args]: a stale instance from an interrupted run is
-# stopped and thrown away, then CTest starts a fresh one (fixture db).
+# run_suite BUILD_DIR PORT [ctest args]: stale instances from an interrupted run are
+# stopped and thrown away, then CTest starts fresh ones (fixtures db and db2, the second
+# on PORT + 10: tests/CMakeLists.txt).
 run_suite() {
   local build="$1" port="$2"
   shift 2
   FLEETMAP_HOME="$PWD/$build/testdb" FLEETMAP_PORT="$port" bash scripts/db.sh stop >/dev/null 2>&1 || true
-  rm -rf "$build/testdb"
+  FLEETMAP_HOME="$PWD/$build/testdb2" FLEETMAP_PORT="$((port + 10))" bash scripts/db.sh stop >/dev/null 2>&1 || true
+  rm -rf "$build/testdb" "$build/testdb2"
   (cd "$build" && ctest --output-on-failure -j"$JOBS" "$@")
 }
 

@@ -177,25 +177,30 @@ TEST_F(ReferenceRobot, AWriteTheDatabaseRefusesCostsOnlyItsOwnRequest) {
   const long long fixes = scalar("SELECT COUNT(*) FROM gps_fixes" + mine);
   const long long poses = scalar("SELECT COUNT(*) FROM trajectories" + mine);
   const long long images = scalar("SELECT COUNT(*) FROM images" + mine);
+  // A refusal only the database makes: a trigger of this test's own (the decoder already
+  // refuses what no column could hold, so no valid request fails by itself).
+  admin()->query("DROP TRIGGER IF EXISTS proto_refuse_image").execute();
+  admin()->query("CREATE TRIGGER proto_refuse_image BEFORE INSERT ON images FOR EACH ROW "
+                 "IF NEW.format = 'refuse-me' THEN SIGNAL SQLSTATE '45000' SET MESSAGE_TEXT = 'refused'; END IF")
+      .execute();
   // One robot transaction: the server sees all five at once, in one batch.
   mysqlpp::Connection& c = robot_->connection();
   c.query("START TRANSACTION").execute();
   const auto gps1 = robot_->send("SendGPS", R"({"lat": 41.0, "lon": 2.0})");
   robot_->send("SendPos", R"({"x": 3, "y": 4, "theta": 0.5, "v": 0})");
-  // images.format is VARCHAR(32): 40 characters are refused by the database (strict mode).
-  const auto bad = robot_->send("SendImage", R"({"x": 1, "y": 2, "format": ")" + std::string(40, 'p') + R"("})",
-                                std::string("\x89PNG"));
+  const auto bad = robot_->send("SendImage", R"({"x": 1, "y": 2, "format": "refuse-me"})", std::string("\x89PNG"));
   const auto gps2 = robot_->send("SendGPS", R"({"lat": 41.5, "lon": 2.5})");
   const auto map = robot_->send("GetMap", R"({"x": 20, "y": 30, "w": 10, "h": 8})");
   c.query("COMMIT").execute();
 
   auto a = robot_->receive(4);
+  admin()->query("DROP TRIGGER IF EXISTS proto_refuse_image").execute();
   ASSERT_EQ(a.size(), 4u);
   EXPECT_EQ(a[0].request_id, gps1);
   EXPECT_EQ(a[0].op, "OpAck");
   EXPECT_EQ(a[1].request_id, bad);
   EXPECT_EQ(a[1].op, "Error");
-  EXPECT_TRUE(a[1].params["code"] == "internal" || a[1].params["code"] == "bad_params") << a[1].params.dump();
+  EXPECT_EQ(a[1].params["code"], "internal") << a[1].params.dump();
   EXPECT_EQ(a[2].request_id, gps2);
   EXPECT_EQ(a[2].op, "OpAck");
   EXPECT_EQ(a[3].request_id, map);
@@ -205,6 +210,19 @@ TEST_F(ReferenceRobot, AWriteTheDatabaseRefusesCostsOnlyItsOwnRequest) {
   EXPECT_EQ(scalar("SELECT COUNT(*) FROM images" + mine), images);
   EXPECT_EQ(scalar("SELECT COUNT(*) FROM robots WHERE x = 3 AND y = 4 AND id = " + std::to_string(robot_id_)), 1);
   EXPECT_EQ(scalar("SELECT COUNT(*) FROM rr WHERE db_user = 'proto_r1'"), 0);
+}
+
+// images.format is VARCHAR(32): the decoder takes as much as the column holds and answers
+// a longer one bad_params, rather than an internal error after a failed batch.
+TEST_F(ReferenceRobot, AnImageFormatIsAsLongAsItsColumnHolds) {
+  ready();
+  const std::string f32(32, 'f');
+  const auto ok = ask("SendImage", R"({"x": 1, "y": 2, "format": ")" + f32 + R"("})", 1, std::string("IMG"));
+  EXPECT_EQ(ok[0].op, "OpAck") << ok[0].params.dump();
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM images WHERE format = '" + f32 + "' AND robot_id = " +
+                   std::to_string(robot_id_)),
+            1);
+  expect_error("SendImage", R"({"x": 1, "y": 2, "format": ")" + std::string(33, 'f') + R"("})", "bad_params");
 }
 
 // Requests that arrive together are handled in one batch, the robot's row changed in

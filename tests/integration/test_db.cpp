@@ -50,6 +50,13 @@ std::string instance_home() {
   return std::filesystem::path(conf).parent_path().string();
 }
 
+void once_per_instance(const std::string& key, const std::function<void()>& setup) {
+  const std::string marker = temp_path("once." + key);
+  if (std::filesystem::exists(marker)) return;
+  setup();
+  write_file(marker, "done\n");
+}
+
 std::string db_script() {
   return "FLEETMAP_HOME=" + instance_home() + " FLEETMAP_PORT=" + std::to_string(settings(Role::Inspector).port) +
          " bash " + source_path("scripts/db.sh");

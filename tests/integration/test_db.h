@@ -3,6 +3,7 @@
 // (scripts/db.sh start with FLEETMAP_HOME/FLEETMAP_PORT from tests/CMakeLists.txt),
 // its accounts, and running the real programs.
 #include <chrono>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -53,6 +54,11 @@ std::string source_path(const std::string& relative);  // under the checkout
 std::string real_map(const std::string& file);         // FLEETMAP_REAL_MAPS/<file>
 std::string temp_path(const std::string& name);        // a scratch file for this test run
 std::string instance_home();                           // the test instance's folder
+// Runs setup the first time `key` is asked for on this instance, and never again while
+// the instance lives (a marker in its scratch folder, written once setup returned).
+// CTest runs each test in a process of its own, so a suite's SetUpTestSuite would
+// otherwise import the same maps once per test.
+void once_per_instance(const std::string& key, const std::function<void()>& setup);
 std::string db_script();                               // "FLEETMAP_HOME=... FLEETMAP_PORT=... bash scripts/db.sh"
 void write_file(const std::string& path, const std::string& text);
 std::string read_file(const std::string& path);

@@ -58,7 +58,9 @@ void fleetmap_ok(const std::string& args) {
 
 class WebApi : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
+  // The tests change robots and tasks only (SetUp resets those), never the maps.
+  static void SetUpTestSuite() { once_per_instance("webapi", import_maps_and_robots); }
+  static void import_maps_and_robots() {
     write_file(temp_path("webapi_gap.map"), kGapMap);
     fleetmap_ok("map import " + temp_path("webapi_gap.map") + " --name webapi_gap --replace --drop all");
     fleetmap_ok("map georef webapi_gap --clear");

@@ -230,8 +230,11 @@ TEST(ParamsSendImage, Valid) {
   EXPECT_FALSE(p.object_id);
   EXPECT_FALSE(decode_send_image(J(R"({"x": 1, "y": 2, "object_id": null, "format": "jpg"})")).object_id);
   EXPECT_EQ(decode_send_image(J(R"({"x": 1, "y": 2, "object_id": -3, "format": "jpg"})")).object_id, -3);
-  const std::string f255(255, 'f');
-  EXPECT_EQ(decode_send_image(Json{{"x", 0}, {"y", 0}, {"format", f255}}).format, f255);
+  const std::string f32(32, 'f');  // images.format is VARCHAR(32)
+  EXPECT_EQ(decode_send_image(Json{{"x", 0}, {"y", 0}, {"format", f32}}).format, f32);
+  const std::string msg = error_of([&] { decode_send_image(Json{{"x", 0}, {"y", 0}, {"format", f32 + "f"}}); },
+                                  ErrorCode::BadParams, "33-byte format");
+  EXPECT_NE(msg.find("1-32 bytes"), std::string::npos) << msg;
   // Quotes are data.
   EXPECT_EQ(decode_send_image(J(R"({"x": 0, "y": 0, "format": "p'n\"g"})")).format, "p'n\"g");
 }
