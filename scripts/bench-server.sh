@@ -206,11 +206,13 @@ fi
 
 if has_phase scaling; then
   printf '\n######## 4. scaling (each robot count: floor, server with each process count, lean; interleaved)\n'
-  over() {  # the last run missed the goal: answered p99 (GetMap and SendGPS) over 20 ms, or a SendPos
-            # stored later than 100 ms (or either figure missing)
+  # The goal (answered p99 <= 20 ms, every SendPos within 100 ms) is judged in the report;
+  # a series goes on past a miss, to show where the limit is and what saturates, and stops
+  # when it falls behind: answered p99 over 1 s, or under 90 % of SendPos within 100 ms.
+  over() {
     local p99 pos; p99="$(worst_p99 "$LOG")"; pos="$(stored_share "$LOG")"
-    if [ -z "$p99" ] || [ -z "$pos" ] || awk -v p="$p99" -v s="$pos" 'BEGIN { exit !(p > 20 || s < 100) }'; then
-      echo "bench-server: p99 ${p99:-?} ms, SendPos within 100 ms ${pos:-?} % at $1: goal missed; this series stops here"
+    if [ -z "$p99" ] || [ -z "$pos" ] || awk -v p="$p99" -v s="$pos" 'BEGIN { exit !(p > 1000 || s < 90) }'; then
+      echo "bench-server: p99 ${p99:-?} ms, SendPos within 100 ms ${pos:-?} % at $1: fallen behind; this series stops here"
       return 0
     fi
     return 1
