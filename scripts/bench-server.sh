@@ -68,7 +68,7 @@ while [ $# -gt 0 ]; do
     --long) SECONDS_=60; SCALING_SECONDS=40; IDLE_SECONDS=30; shift ;;
     --no-build) BUILD_FIRST=0; shift ;;
     --no-lean) LEAN=0; shift ;;
-    -h|--help) sed -n '2,40p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,39p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench-server: unknown option '$1' (--help)" >&2; exit 64 ;;
   esac
 done
