@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_option("--threads", s.filter.threads, "filter threads")->capture_default_str();
-  app.add_option("--config", config, "seed, robust, search (comma-separated) or all")->capture_default_str();
+  app.add_option("--config", config, "seed, robust, search, fast (comma-separated) or all")->capture_default_str();
   app.add_option("--kidnaps", s.kidnaps, "kidnapping trials per map and config (0: none)")->capture_default_str();
   app.add_option("--kidnap-after", s.kidnap_after, "metres of tracking before each kidnap")->capture_default_str();
   app.add_option("--recover-updates", s.recover_updates, "updates a recovery may take (0: detection only)")
@@ -141,7 +141,7 @@ int main(int argc, char** argv) {
     }
   for (const std::string& c : configs)
     if (!preset(c)) {
-      std::fprintf(stderr, "--config: expected seed, robust, search or all, got %s\n", c.c_str());
+      std::fprintf(stderr, "--config: expected seed, robust, search, fast or all, got %s\n", c.c_str());
       return 2;
     }
   s.look_around_turn = deg2rad(turn_deg);

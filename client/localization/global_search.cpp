@@ -65,6 +65,24 @@ GlobalSearch::GlobalSearch(const Map& map, GlobalSearchOptions o) : options_(o),
   by0_ = iy0 / b;
   bx1_ = ix1 / b + 1;
   by1_ = iy1 / b + 1;
+  options_.coarse = std::max(1, o.coarse);
+  // The coarse level's bounds: the block bounds pooled over coarse blocks each way.
+  const int c = options_.coarse;
+  if (c > 1) {
+    const auto pool = [&](const std::vector<float>& in, std::vector<float>& out, size_t step, int along, int n_lines,
+                          size_t line_step) {
+      for (int line = 0; line < n_lines; ++line)
+        for (int i = 0; i < along; ++i) {
+          float m = kNone;
+          for (int k = 0; k < c && i + k * b < along; ++k) m = std::max(m, in[line * line_step + (i + k * b) * step]);
+          out[line * line_step + i * step] = m;
+        }
+    };
+    std::vector<float> tmp(n);
+    pool(pooled_, tmp, 1, w, h, static_cast<size_t>(w));
+    pooled_coarse_.resize(n);
+    pool(tmp, pooled_coarse_, static_cast<size_t>(w), h, w, 1);
+  }
   block_allowed_.assign(static_cast<size_t>(bx1_ - bx0_) * (by1_ - by0_), 0);
   for (int iy = iy0; iy <= iy1; ++iy)
     for (int ix = ix0; ix <= ix1; ++ix)
@@ -115,49 +133,94 @@ std::vector<Candidate> GlobalSearch::search(const std::vector<double>& ranges, c
     return s;
   };
 
-  // Bounds of every block and heading.
-  const int nbx = bx1_ - bx0_, nby = by1_ - by0_;
+  // Block bounds (per heading) are computed when their coarse block is expanded.
+  const int nbx = bx1_ - bx0_, nby = by1_ - by0_, c = options_.coarse;
   const size_t blocks = static_cast<size_t>(nbx) * nby;
-  std::vector<float> bound(blocks * nh, kNone), best_bound(blocks, kNone);
-  parallel_for(options_.threads, static_cast<size_t>(nby), [&](int, size_t row0, size_t row1) {
-    for (size_t row = row0; row < row1; ++row)
-      for (int col = 0; col < nbx; ++col) {
-        const size_t blk = row * nbx + col;
-        if (!block_allowed_[blk]) continue;
-        const size_t base = field_.index((bx0_ + col) * b, (by0_ + static_cast<int>(row)) * b);
-        for (int k = 0; k < nh; ++k) {
-          bound[blk * nh + k] = sum(pooled_, base, offsets[k]);
-          best_bound[blk] = std::max(best_bound[blk], bound[blk * nh + k]);
+  std::vector<float> bound(blocks * nh, kNone);
+  const auto bound_block = [&](size_t blk) {
+    const size_t base = field_.index((bx0_ + static_cast<int>(blk % nbx)) * b, (by0_ + static_cast<int>(blk / nbx)) * b);
+    float best = kNone;
+    for (int k = 0; k < nh; ++k) best = std::max(best, bound[blk * nh + k] = sum(pooled_, base, offsets[k]));
+    return best;
+  };
+  // Entries to expand: coarse blocks (ids from `blocks` on) and blocks, best bound first.
+  struct Entry {
+    float bound;
+    uint32_t id;
+    bool operator<(const Entry& o) const { return bound < o.bound || (bound == o.bound && id > o.id); }
+  };
+  std::vector<Entry> initial;
+  if (c > 1) {
+    const int ncx = (nbx + c - 1) / c, ncy = (nby + c - 1) / c;
+    std::vector<Entry> coarse(static_cast<size_t>(ncx) * ncy, Entry{kNone, 0});
+    parallel_for(options_.threads, static_cast<size_t>(ncy), [&](int, size_t row0, size_t row1) {
+      for (size_t row = row0; row < row1; ++row)
+        for (int col = 0; col < ncx; ++col) {
+          bool any = false;
+          for (int r = static_cast<int>(row) * c; r < std::min(nby, (static_cast<int>(row) + 1) * c) && !any; ++r)
+            for (int q = col * c; q < std::min(nbx, (col + 1) * c) && !any; ++q) any = block_allowed_[static_cast<size_t>(r) * nbx + q];
+          if (!any) continue;
+          const size_t base = field_.index((bx0_ + col * c) * b, (by0_ + static_cast<int>(row) * c) * b);
+          float best = kNone;
+          for (int k = 0; k < nh; ++k) best = std::max(best, sum(pooled_coarse_, base, offsets[k]));
+          coarse[row * ncx + col] = {best, static_cast<uint32_t>(blocks + row * ncx + col)};
         }
-      }
-  });
-  std::vector<uint32_t> order;
-  for (size_t blk = 0; blk < blocks; ++blk)
-    if (block_allowed_[blk]) order.push_back(static_cast<uint32_t>(blk));
-  std::sort(order.begin(), order.end(), [&](uint32_t l, uint32_t r) { return best_bound[l] > best_bound[r]; });
+    });
+    for (const Entry& e : coarse)
+      if (e.bound > kNone) initial.push_back(e);
+  } else {
+    std::vector<Entry> all(blocks, Entry{kNone, 0});
+    parallel_for(options_.threads, blocks, [&](int, size_t b0, size_t b1) {
+      for (size_t blk = b0; blk < b1; ++blk)
+        if (block_allowed_[blk]) all[blk] = {bound_block(blk), static_cast<uint32_t>(blk)};
+    });
+    for (const Entry& e : all)
+      if (e.bound > kNone) initial.push_back(e);
+  }
+  std::priority_queue<Entry> open(std::less<Entry>(), std::move(initial));
+  const int ncx = (nbx + c - 1) / c;
 
   // Expand best bound first, a batch per thread pass; keep the K best blocks.
   const size_t k_best = std::max<size_t>(1, k);
   std::priority_queue<Scored, std::vector<Scored>, std::greater<Scored>> top;  // the worst of the K on top
   const auto threshold = [&] { return top.size() < k_best ? kNone : top.top().score; };
   const size_t batch = 16 * static_cast<size_t>(std::max(1, options_.threads));
+  std::vector<Entry> taken;
   std::vector<Scored> found(batch);
-  size_t next = 0;
-  while (next < order.size() && best_bound[order[next]] > threshold()) {
+  std::vector<std::vector<Entry>> children(batch);
+  while (!open.empty() && open.top().bound > threshold()) {
     const float cut = threshold();
-    const size_t end = std::min(order.size(), next + batch);
-    parallel_for(options_.threads, end - next, [&](int, size_t i0, size_t i1) {
+    taken.clear();
+    while (taken.size() < batch && !open.empty() && open.top().bound > cut) {
+      taken.push_back(open.top());
+      open.pop();
+    }
+    parallel_for(options_.threads, taken.size(), [&](int, size_t i0, size_t i1) {
       for (size_t i = i0; i < i1; ++i) {
-        const uint32_t blk = order[next + i];
+        found[i] = {kNone, {}};
+        children[i].clear();
+        if (taken[i].id >= blocks) {  // a coarse block: bound its blocks
+          const size_t cb = taken[i].id - blocks;
+          const int col = static_cast<int>(cb % ncx), row = static_cast<int>(cb / ncx);
+          for (int r = row * c; r < std::min(nby, (row + 1) * c); ++r)
+            for (int q = col * c; q < std::min(nbx, (col + 1) * c); ++q) {
+              const size_t blk = static_cast<size_t>(r) * nbx + q;
+              if (!block_allowed_[blk]) continue;
+              const float bb = bound_block(blk);
+              if (bb > cut) children[i].push_back({bb, static_cast<uint32_t>(blk)});
+            }
+          continue;
+        }
+        const uint32_t blk = taken[i].id;
         const int bx = bx0_ + static_cast<int>(blk % nbx), by = by0_ + static_cast<int>(blk / nbx);
         Scored best{kNone, {}};
         for (int k = 0; k < nh; ++k) {
           if (!(bound[static_cast<size_t>(blk) * nh + k] > std::max(cut, best.score))) continue;
           for (int iy = by * b; iy < std::min(field_.height(), (by + 1) * b); ++iy)
             for (int ix = bx * b; ix < std::min(w, (bx + 1) * b); ++ix) {
-              const size_t c = field_.index(ix, iy);
-              if (!allowed_[c]) continue;
-              const float s = sum(score_, c, offsets[k]);
+              const size_t cell = field_.index(ix, iy);
+              if (!allowed_[cell]) continue;
+              const float s = sum(score_, cell, offsets[k]);
               if (s > best.score) {
                 const Point p = field_.centre(ix, iy);
                 best = {s, {{p.x, p.y, headings[k]}, s}};
@@ -167,7 +230,10 @@ std::vector<Candidate> GlobalSearch::search(const std::vector<double>& ranges, c
         found[i] = best;
       }
     });
-    for (size_t i = 0; i < end - next; ++i) {
+    for (size_t i = 0; i < taken.size(); ++i) {
+      for (const Entry& e : children[i]) open.push(e);
+      if (taken[i].id >= blocks) continue;
+      ++expanded_;
       if (found[i].score == kNone) continue;
       if (top.size() < k_best) top.push(found[i]);
       else if (found[i].score > top.top().score) {
@@ -175,8 +241,6 @@ std::vector<Candidate> GlobalSearch::search(const std::vector<double>& ranges, c
         top.push(found[i]);
       }
     }
-    expanded_ += end - next;
-    next = end;
   }
   std::vector<Candidate> out;
   for (; !top.empty(); top.pop()) out.push_back(top.top().candidate);

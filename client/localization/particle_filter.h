@@ -93,6 +93,15 @@ struct ParticleFilterOptions {
   // up to this many more updates search again with every scan so far: a full turn shows
   // what one 180 degree scan does not (bench-localization --look-around).
   size_t look_around_searches = 6;
+  // Whether the global phase's searches wait for the end of the look around (its last
+  // turn, or the first step driven): the scans are kept and only that update searches, on
+  // all of them. Without, every update of the look around searches, and each cloud is
+  // thrown away by the next search. The updates before leave the cloud as initialised.
+  bool defer_look_around = false;
+  size_t search_particles = 0;        // particles spread over the clusters (0: NP)
+  // A searched cloud is weighed on the earlier scans by every this-th beam (the latest
+  // scan by all): 1 casts them all.
+  size_t history_beam_stride = 1;
   size_t search_points = 262;         // at most this many stitched points (2 NL) searched
   double turn_in_place = 0.05;        // metres: below, a step's turn comes from its scans
   double search_sd_xy = 0.1;          // metres: spread of a cluster (the field's cell)
@@ -114,6 +123,11 @@ struct ParticleFilterOptions {
   // robust() whose global cloud comes from the global search instead of a uniform draw:
   // what fleetmap-robot and SimRobot use.
   static ParticleFilterOptions robust_search();
+  // robust_search() within a second of computation (bench-localization --config
+  // search,fast): the look around searches once, at its end, on every scan; fewer
+  // candidates, clusters and particles; the searched cloud weighed on a third of the
+  // earlier scans' beams; KLD sampling once it has collapsed.
+  static ParticleFilterOptions fast_search();
 };
 
 struct PoseEstimate {
@@ -218,6 +232,7 @@ class ParticleFilter {
   // poses relative to the latest (the stitched scan's), not on the latest scan alone.
   std::vector<Pose> searched_at_;
   size_t searches_ = 0;
+  size_t searched_scans_ = 0;  // history_'s scans at the last search
   bool looking_around_ = false;  // only turns in place since init_global
   std::vector<Candidate> candidates_;
   std::vector<Pose> poses_;

@@ -60,6 +60,7 @@ struct GlobalResult {
   std::vector<int> first_within;    // update at which the estimate first got within bounds
   std::vector<double> final_error;  // metres, per trial
   double seconds = 0;               // all trials, without setup
+  std::vector<double> trial_seconds;  // per trial
   double setup_seconds = 0;         // once per map: the global search's likelihood field
 };
 
@@ -89,7 +90,7 @@ KidnapResult run_kidnap_trials(const Map& map, std::shared_ptr<const RayCaster> 
 void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s);
 
 // The presets by name: "seed" (ParticleFilterOptions::seed_model), "robust", "search"
-// (robust_search, the robot's default); nullopt for another name.
+// (robust_search, the robot's default), "fast" (fast_search); nullopt for another name.
 std::optional<ParticleFilterOptions> preset(const std::string& name);
 const std::vector<std::string>& preset_names();
 

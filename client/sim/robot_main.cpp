@@ -52,7 +52,7 @@ int run_trials(int trials, std::vector<std::string> maps, const std::string& pre
     at = comma + 1;
   }
   for (const std::string& n : names)
-    if (!loc::preset(n)) throw fleetmap::UsageError("--presets: expected seed, robust or search, got " + n);
+    if (!loc::preset(n)) throw fleetmap::UsageError("--presets: expected seed, robust, search or fast, got " + n);
   if (maps.empty()) maps = {fleetmap::real_map_path("GDC1.vectormap.txt"), fleetmap::real_map_path("UT_Campus.vectormap.txt")};
   for (const std::string& path : maps) {
     const fleetmap::Map map = loc::load_map_file(path);  // MapFormatError: exit 2

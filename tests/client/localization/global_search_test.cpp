@@ -69,6 +69,33 @@ TEST(GlobalSearch, BranchAndBoundFindsTheExhaustiveBest) {
   EXPECT_NEAR(search.score(c[0].pose, scan, laser.beam_angles(), 15.0), c[0].score, 1e-3);
 }
 
+// The coarse level only prunes: with it and without, the same K blocks, each with the
+// same best pose. A coarse bound below some pose's score would lose candidates.
+TEST(GlobalSearch, CoarseLevelKeepsTheSameCandidates) {
+  const Map map = read_amrl_file(std::string(FLEETMAP_REAL_MAPS) + "/GDC1.vectormap.txt", AmrlOptions{});
+  const auto world = std::make_shared<GridRayCaster>(map, RayCasterOptions{0.3, 15.0});
+  GlobalSearchOptions flat = options_for(15.0), coarse = options_for(15.0);
+  flat.coarse = 1;
+  coarse.coarse = 4;
+  const GlobalSearch a(map, flat), b(map, coarse);
+  const FreeSpace free_space(map);
+  std::mt19937_64 rng(41);
+  LaserSimulator laser(world, {}, rng());
+  for (int t = 0; t < 3; ++t) {
+    const Pose truth = pick_start_pose(free_space, *world, laser.beam_angles(), 0.5, 0.5, rng);
+    const std::vector<double> scan = laser.scan(truth);
+    const std::vector<Candidate> ca = a.search(scan, laser.beam_angles(), 15.0, truth.theta, deg2rad(3.0), 300);
+    const std::vector<Candidate> cb = b.search(scan, laser.beam_angles(), 15.0, truth.theta, deg2rad(3.0), 300);
+    ASSERT_EQ(ca.size(), 300u);
+    ASSERT_EQ(cb.size(), ca.size());
+    for (size_t k = 0; k < ca.size(); ++k) {
+      EXPECT_NEAR(cb[k].score, ca[k].score, 1e-3) << "trial " << t << ", candidate " << k;
+      EXPECT_LT(distance(cb[k].pose, ca[k].pose), 1e-9) << "trial " << t << ", candidate " << k;
+    }
+    EXPECT_LT(b.last_expanded(), a.last_expanded() + 1);  // no block scored that the flat search would not
+  }
+}
+
 TEST(GlobalSearch, NoReturnsNoCandidates) {
   const Map m = test::room_map();
   const GlobalSearch search(m, options_for(15.0));

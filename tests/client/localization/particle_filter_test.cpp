@@ -189,6 +189,52 @@ TEST(ParticleFilter, GlobalLocalizationInTheRoom) {
   EXPECT_TRUE(f.estimate().converged);
 }
 
+// defer_look_around: the turns in place only collect scans; the last turn (the 7th scan
+// with look_around_searches 6), or the first step driven, searches once on all of them.
+// Searching at every turn (or never) would show candidates before the end, or none.
+TEST(ParticleFilter, DeferredLookAroundSearchesOnceAtItsEnd) {
+  const Map m = test::room_map();
+  const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
+  for (const int turns : {6, 2}) {
+    LaserSimulator laser(world, {}, 9);
+    ParticleFilterOptions o = ParticleFilterOptions::fast_search();
+    o.particles = 800;
+    o.kld.max_particles = 800;
+    o.seed = 5;
+    ParticleFilter f(m, world, o);
+    Pose truth{6.5, 8.0, -0.4};
+    f.init_global(truth.theta);
+    const std::vector<double> before = f.weights();
+    for (int u = 1; u <= turns + 1; ++u) {
+      if (u > 1) {
+        const Odometry turn{0, 0, deg2rad(60.0)};
+        truth = compose(truth, turn);
+        f.predict(turn);
+      }
+      f.update(laser.scan(truth), truth.theta);
+      if (u < 7) {
+        EXPECT_TRUE(f.last_candidates().empty()) << turns << " turns, update " << u;
+        EXPECT_TRUE(f.searching());
+        EXPECT_EQ(f.weights(), before) << "the cloud waits for the search";
+      }
+    }
+    if (turns == 6) {
+      EXPECT_FALSE(f.last_candidates().empty());
+      EXPECT_FALSE(f.searching());
+    } else {  // drives after two turns: the step searches on the three turns' scans and itself
+      const Odometry ahead{0.5, 0, 0};
+      truth = compose(truth, ahead);
+      f.predict(ahead);
+      f.update(laser.scan(truth), truth.theta);
+      EXPECT_FALSE(f.last_candidates().empty());
+      EXPECT_FALSE(f.searching());
+    }
+    const PoseEstimate e = f.estimate();
+    EXPECT_LT(distance(e.pose, truth), 0.3) << turns << " turns";
+    EXPECT_LT(std::fabs(angle_diff(e.pose.theta, truth.theta)), deg2rad(3.0)) << turns << " turns";
+  }
+}
+
 TEST(ParticleFilter, TrackingInTheRoomStaysWithinBounds) {
   const Map m = test::room_map();
   const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
