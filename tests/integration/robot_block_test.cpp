@@ -28,13 +28,6 @@ using std::chrono::seconds;
 
 constexpr const char* kMap = "robot_block_map";
 
-struct RemoveRobotsAtEnd {
-  std::vector<std::string> names;
-  ~RemoveRobotsAtEnd() {
-    for (const std::string& n : names) run("fleetmap", "robot remove " + n);
-  }
-};
-
 void push_answer(mysqlpp::Connection& db, const std::string& name) {
   mysqlpp::Query q = db.query();
   q << "INSERT INTO sa (robot_id, db_user, request_id, op, params) SELECT id, db_user, NULL, 'OpAck', "

@@ -26,13 +26,6 @@ using Clock = std::chrono::steady_clock;
 constexpr const char* kMap = "salock_map";
 constexpr const char* kB = "salock_b";
 
-struct RemoveRobotsAtEnd {
-  std::vector<std::string> names;
-  ~RemoveRobotsAtEnd() {
-    for (const std::string& n : names) run("fleetmap", "robot remove " + n);
-  }
-};
-
 // One answer for name, inserted as the server would; returns its id.
 unsigned long long push_answer(mysqlpp::Connection& db, const std::string& name) {
   mysqlpp::Query q = db.query();

@@ -84,13 +84,6 @@ class Daemon {
 void fresh_log(const std::string& name) { write_file(temp_path(name), ""); }
 
 // Robot accounts made for one test only are removed at its end, also when it fails early.
-struct RemoveRobotsAtEnd {
-  std::vector<std::string> names;
-  ~RemoveRobotsAtEnd() {
-    for (const std::string& n : names) run("fleetmap", "robot remove " + n);
-  }
-};
-
 // The answers an op gets, in order (SPEC 5.2). The ops used here always get an answer.
 std::vector<std::string> expected_answers(const std::string& op) {
   if (op == "Ready") return {"Start", "SetMap"};

@@ -59,6 +59,30 @@ std::string add_robot(const std::string& name, const std::string& map) {
   return password;
 }
 
+std::vector<std::string> add_robots(const std::vector<std::string>& names, const std::string& map) {
+  auto db = admin();
+  std::vector<std::string> passwords;
+  for (const std::string& name : names) {
+    passwords.push_back("pw-" + name + "-0123456789");
+    mysqlpp::Query exists = db->query();
+    exists << "SELECT COUNT(*) FROM robots WHERE removed_at IS NULL AND db_user = " << mysqlpp::quote << name;
+    if (std::stoll(std::string(exists.store()[0][0])) > 0) {  // a robot from an earlier run
+      mysqlpp::Query remove = db->query();
+      remove << "CALL robot_remove(" << mysqlpp::quote << name << ")";
+      remove.execute();
+    }
+    mysqlpp::Query add = db->query();
+    add << "CALL robot_add(" << mysqlpp::quote << name << ", " << mysqlpp::quote << passwords.back() << ", "
+        << mysqlpp::quote << map << ", NULL)";
+    add.execute();
+  }
+  return passwords;
+}
+
+RemoveRobotsAtEnd::~RemoveRobotsAtEnd() {
+  for (const std::string& n : names) run("fleetmap", "robot remove " + n);
+}
+
 void ensure_example_map(const std::string& name) {
   if (scalar("SELECT COUNT(*) FROM maps WHERE name = '" + name + "'") > 0) return;
   RunResult r = run("fleetmap", "map import " + source_path("maps/example-campus.map") + " --name " + name);

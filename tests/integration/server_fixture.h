@@ -38,6 +38,15 @@ class ServerProcess {
 
 // Creates (or re-creates) a robot account on map via the real CLI; returns its password.
 std::string add_robot(const std::string& name, const std::string& map);
+// Many accounts at once (a fleet): the account procedures of sql/40_robot_accounts.sql,
+// which `robot add` calls, on one connection instead of two CLI processes per robot.
+// Returns the passwords, in the order of names.
+std::vector<std::string> add_robots(const std::vector<std::string>& names, const std::string& map);
+// Removes the robots (fleetmap robot remove) when it goes out of scope.
+struct RemoveRobotsAtEnd {
+  std::vector<std::string> names;
+  ~RemoveRobotsAtEnd();
+};
 // Imports maps/example-campus.map as `name` if it is not there yet.
 void ensure_example_map(const std::string& name);
 
