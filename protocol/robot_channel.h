@@ -30,6 +30,17 @@ class RobotChannel {
   std::vector<ReceivedAnswer> answers(unsigned long long after, size_t limit);
   void remove(unsigned long long answer_id);
 
+  // The highest id of this account's requests above `after` that the database holds,
+  // waiting (rr_mine) or answered (sa_mine's request_id); nullopt: none. After a lost
+  // connection, tells whether the INSERT in flight committed (SPEC 5.3): requests of one
+  // robot get growing ids, so above the last acknowledged one can be only that one.
+  std::optional<unsigned long long> request_after(unsigned long long after);
+
+  // Galera: reads from now on wait until this node has applied every transaction the
+  // cluster committed before them (wsrep_sync_wait), so that after moving to another node
+  // the robot sees its own requests and answers. A no-op without Galera.
+  void causal_reads(bool on);
+
  private:
   mysqlpp::Connection& c_;
 };
