@@ -78,8 +78,17 @@ void RobotClient::open_connection() {
     try {
       auto c = connect(s);
       RobotChannel ch(*c);
-      // On another node: wait until it applied what the cluster committed (our requests,
-      // their answers), then see what of ours is there above the last request known.
+      // Back on the node of the connection that broke: a statement of it may still be
+      // committing there (a connection the stall guard ended, say); wait until it is gone,
+      // so that what we see below is final.
+      if (i == host_ && connection_id_ != 0) {
+        const auto until = Clock::now() + reconnect_for_;
+        while (ch.session_alive(connection_id_) && Clock::now() < until)
+          std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      }
+      // On another node (the old one down: what it did not replicate did not commit):
+      // wait until this one applied what the cluster committed (our requests, their
+      // answers), then see what of ours is there above the last request known.
       ch.causal_reads(true);
       try {
         found_at_connect_ = ch.request_after(last_request_);
@@ -91,6 +100,7 @@ void RobotClient::open_connection() {
         spdlog::warn("robot client: {}; requests in doubt after a lost connection will be sent again", e.what());
       }
       ch.causal_reads(false);
+      connection_id_ = ch.connection_id();
       conn_ = std::move(c);
       host_ = i;
       ++epoch_;
@@ -141,10 +151,11 @@ auto RobotClient::with_connection(F&& f) -> decltype(f(std::declval<RobotChannel
         continue;
       }
       if (!connection_error(e) || Clock::now() > give_up) throw;
-      spdlog::warn("robot client: connection to {} lost ({}); trying the next host", node(), e.what());
+      spdlog::warn("robot client: connection to {} lost ({}); reconnecting", node(), e.what());
       conn_.reset();
-      host_ = (host_ + 1) % hosts_.size();
-      continue;  // the next host at once; the back-off is between rounds over all of them
+      // The same node first (it refuses at once when it is down), then the next ones; a
+      // node that will not serve (1047) fails its first read there and is passed over.
+      continue;  // at once; the back-off is between rounds over all the hosts
     } catch (const DbError& e) {  // a round over every host failed: the database is still down
       if (Clock::now() > give_up) throw;
       spdlog::debug("robot client: {}; again in {:.2f} s", e.what(), wait_s);

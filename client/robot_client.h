@@ -114,6 +114,7 @@ class RobotClient {
   std::vector<unsigned long long> unremoved_;  // answers handed over, their delete not yet committed
   std::atomic<size_t> in_doubt_{0}, found_committed_{0};
   size_t epoch_ = 0;  // connections opened so far
+  unsigned long long connection_id_ = 0;  // of the connection in use (or lost last), on hosts_[host_]
   std::optional<unsigned long long> found_at_connect_;  // request_after(last_request_) on connecting
   std::deque<ReceivedAnswer> inbox_;
   unsigned long long last_answer_ = 0;

@@ -52,6 +52,17 @@ std::optional<unsigned long long> RobotChannel::request_after(unsigned long long
   return std::nullopt;
 }
 
+unsigned long long RobotChannel::connection_id() {
+  mysqlpp::Query q = c_.query("SELECT CONNECTION_ID()");
+  return sql::to_uint(q.store()[0][0]);
+}
+
+bool RobotChannel::session_alive(unsigned long long connection_id) {
+  mysqlpp::Query q = c_.query();
+  q << "SELECT COUNT(*) FROM information_schema.PROCESSLIST WHERE ID = " << connection_id;
+  return sql::to_uint(q.store()[0][0]) > 0;
+}
+
 void RobotChannel::causal_reads(bool on) {
   try {
     mysqlpp::Query q = c_.query();

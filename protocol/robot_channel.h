@@ -41,6 +41,12 @@ class RobotChannel {
   // the robot sees its own requests and answers. A no-op without Galera.
   void causal_reads(bool on);
 
+  // This connection's id, and whether a connection of this id still runs on this node
+  // (a robot sees its own sessions in the process list). A connection that broke, or that
+  // the server ended, may still be committing its last statement there.
+  unsigned long long connection_id();
+  bool session_alive(unsigned long long connection_id);
+
  private:
   mysqlpp::Connection& c_;
 };
