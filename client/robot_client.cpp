@@ -1,6 +1,7 @@
 #include "client/robot_client.h"
 
 #include <algorithm>
+#include <string_view>
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/post.hpp>
@@ -41,11 +42,15 @@ bool rolled_back(const mysqlpp::Exception& e) {
 
 // The node is gone or will not serve: move to the next host. 2000..2999: the client lost
 // the server; 1047: a Galera node that is not primary or not synced ("WSREP has not yet
-// prepared node for application use"); 1927: the connection was killed (the stall guard).
+// prepared node for application use"); 1180: a commit the node could not replicate
+// ("Error while appending streaming replication fragment (... Not connected to Primary
+// Component)", seen as a cut healed); 1927: the connection was killed (the stall guard).
+// Whether a failed INSERT committed is then looked up, never assumed.
 bool connection_error(const mysqlpp::Exception& e) {
   if (const auto* bq = dynamic_cast<const mysqlpp::BadQuery*>(&e)) {
     const unsigned n = bq->errnum();
-    return (n >= 2000 && n < 3000) || n == 1047 || n == 1927;
+    return (n >= 2000 && n < 3000) || n == 1047 || n == 1180 || n == 1927 ||
+           std::string_view(bq->what()).find("Primary Component") != std::string_view::npos;
   }
   return dynamic_cast<const mysqlpp::ConnectionFailed*>(&e) != nullptr;
 }

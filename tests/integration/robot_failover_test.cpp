@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "client/robot_client.h"
+#include "protocol/connection.h"
 #include "tests/integration/server_fixture.h"
 #include "tests/integration/test_db.h"
 
