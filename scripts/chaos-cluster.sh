@@ -63,14 +63,17 @@ server_start() {  # server_start NAME NODE PARTITION
 }
 server_stop() { local p="${SRV[$1]:-}"; [ -n "$p" ] && { kill "$p" 2>/dev/null || true; wait "$p" 2>/dev/null || true; }; SRV[$1]=""; }
 server_kill() { local p="${SRV[$1]:-}"; [ -n "$p" ] && { kill -9 "$p" 2>/dev/null || true; wait "$p" 2>/dev/null || true; }; SRV[$1]=""; }
+FLEET=""
 cleanup() {
+  [ -n "$FLEET" ] && { kill "$FLEET" 2>/dev/null || true; wait "$FLEET" 2>/dev/null || true; }
   for s in "${!SRV[@]}"; do server_stop "$s"; done
   [ "$KEEP" = 1 ] || bash "$CL" stop >/dev/null 2>&1 || true
 }
 trap cleanup EXIT
 wsrep() { bash "$CL" sql "$1" -N -e "SHOW GLOBAL STATUS LIKE '$2'" 2>/dev/null | awk '{print $2}'; }
-fleet() {  # fleet NAME HOSTS SECONDS [STOPFILE]: one phase; its line goes to $W/NAME.out
-  "$BIN/galera_robot_fleet" --accounts "$W/accounts" --hosts "$2" --database "$DB" --seconds "$3" ${4:+--stop-file "$4"} \
+fleet() {  # fleet NAME HOSTS SECONDS [STOPFILE PAUSE_MS]: one phase; its line goes to $W/NAME.out
+  "$BIN/galera_robot_fleet" --accounts "$W/accounts" --hosts "$2" --database "$DB" --seconds "$3" \
+    ${4:+--stop-file "$4"} ${5:+--pause-ms "$5"} \
     --answer-timeout 40 --log-level warn > "$W/$1.out" 2> "$W/$1.err"
 }
 field() { awk -v k="$2" '{for (i = 1; i < NF; i += 2) if ($i == k) print $(i + 1)}' "$W/$1.out"; }
@@ -122,17 +125,18 @@ CLUSTER_1213="$(conflicts "$W/server-A.log" "$W/server-B.log")"
 
 step "faults: traffic until the last fault healed, a fault every ${STEP_S} s"
 rm -f "$W/faults.stop"
-fleet faults "$N1,$N2,$N3" 600 "$W/faults.stop" & FLEET=$!
+# Paced, as a fleet sends: a closed loop at full speed keeps a rejoining node catching up.
+fleet faults "$N1,$N2,$N3" 600 "$W/faults.stop" 250 & FLEET=$!
 sleep "$STEP_S"
 step "kill -9 node 3 (robots on it fail over)"; bash "$CL" kill 3 >/dev/null
 sleep "$STEP_S"
-step "node 3 rejoins"; bash "$CL" start 3 >/dev/null
+step "node 3 rejoins"; bash "$CL" start 3 >/dev/null || fail "node 3 did not rejoin"
 step "kill -9 server A, restart it"; server_kill A; sleep 1; server_start A 1 0/2
 sleep "$STEP_S"
 step "kill -9 node 2 and server B together; B restarts on node 3"
 server_kill B; bash "$CL" kill 2 >/dev/null; server_start B 3 1/2
 sleep "$STEP_S"
-step "node 2 rejoins"; bash "$CL" start 2 >/dev/null
+step "node 2 rejoins"; bash "$CL" start 2 >/dev/null || fail "node 2 did not rejoin"
 sleep 1
 step "cut node 2 off the others (gmcast.isolate)"
 bash "$CL" sql 2 -e "SET GLOBAL wsrep_provider_options = 'gmcast.isolate=1'"
@@ -159,6 +163,7 @@ done
 sleep "$STEP_S"  # traffic on the healed cluster
 touch "$W/faults.stop"
 rc=0; wait "$FLEET" || rc=$?
+FLEET=""
 check_phase faults "$rc"
 [ "$(field faults reconnected_robots)" -ge 1 ] 2>/dev/null || fail "faults: no robot reconnected"
 for n in 1 2 3; do

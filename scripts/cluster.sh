@@ -140,13 +140,15 @@ wsrep_status() {  # wsrep_status N VAR
   db "$1" sql -N -e "SHOW GLOBAL STATUS LIKE '$2'" 2>/dev/null | awk '{print $2}'
 }
 
+# A joiner applies what the others commit meanwhile before it is Synced: under heavy
+# writes on a loaded machine that takes minutes (FLEETMAP_CLUSTER_SYNC_S, default 180).
 wait_synced() {
-  local n="$1" i
-  for i in $(seq 1 240); do
+  local n="$1" i limit="${FLEETMAP_CLUSTER_SYNC_S:-180}"
+  for i in $(seq 1 $((limit * 4))); do
     [ "$(wsrep_status "$n" wsrep_local_state_comment)" = Synced ] && return 0
     sleep 0.25
   done
-  die "node $n did not reach Synced within 60 s, see $(node_home "$n")/mysqld.log"
+  die "node $n did not reach Synced within $limit s, see $(node_home "$n")/mysqld.log"
 }
 
 start_all() {

@@ -16,7 +16,7 @@
 // lost, twice, order and foreign are all 0; else 1.
 //
 //   galera_robot_fleet --accounts FILE --hosts LIST [--database NAME] [--seconds S]
-//                      [--burst B] [--answer-timeout S] [--stop-file F] [--log-level L]
+//                      [--burst B] [--answer-timeout S] [--stop-file F] [--pause-ms MS] [--log-level L]
 // --stop-file: sending also ends once F exists (a fault run of unknown length).
 // FILE: one robot a line, "name password" (host order: robot i starts on host i mod n).
 #include <algorithm>
@@ -53,7 +53,7 @@ struct Tally {
 std::atomic<bool> g_stopped{false};  // the stop file appeared
 
 void run_robot(const DbSettings& base, const Account& acc, size_t first_host, size_t burst, double answer_timeout_s,
-               Clock::time_point end, Tally& t) {
+               double pause_ms, Clock::time_point end, Tally& t) {
   DbSettings s = base;
   s.user = acc.name;
   s.password = acc.password;
@@ -111,6 +111,7 @@ void run_robot(const DbSettings& base, const Account& acc, size_t first_host, si
           ++t.lost;
           spdlog::error("{}: request {} not answered within {} s", acc.name, id, answer_timeout_s);
         }
+      if (pause_ms > 0) std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(pause_ms));
     }
     // Late doubles show up here.
     const auto settle = Clock::now() + std::chrono::milliseconds(600);
@@ -146,6 +147,7 @@ int main(int argc, char** argv) {
   double seconds = 10, answer_timeout_s = 60;
   size_t burst = 3;
   std::string stop_file;
+  double pause_ms = 0;
   app.add_option("--accounts", accounts_file, "robots, one a line: 'name password'")->required()->check(CLI::ExistingFile);
   app.add_option("--hosts", hosts, "database nodes 'host:port,...'")->required();
   app.add_option("--database", database, "database name")->capture_default_str();
@@ -153,6 +155,7 @@ int main(int argc, char** argv) {
   app.add_option("--burst", burst, "requests sent before their answers are awaited")->capture_default_str()->check(CLI::Range(1, 100));
   app.add_option("--answer-timeout", answer_timeout_s, "a request unanswered this long is lost, s")->capture_default_str();
   app.add_option("--stop-file", stop_file, "sending ends once this file exists");
+  app.add_option("--pause-ms", pause_ms, "each robot waits this long between bursts (0: a closed loop)")->capture_default_str();
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(spdlog::level::from_str(log_level));
@@ -185,7 +188,7 @@ int main(int argc, char** argv) {
   const auto end = t0 + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
   std::vector<std::thread> threads;
   for (size_t i = 0; i < accounts.size(); ++i)
-    threads.emplace_back(run_robot, std::cref(base), std::cref(accounts[i]), i, burst, answer_timeout_s, end,
+    threads.emplace_back(run_robot, std::cref(base), std::cref(accounts[i]), i, burst, answer_timeout_s, pause_ms, end,
                          std::ref(tallies[i]));
   std::thread watcher;
   std::atomic<bool> joined{false};
