@@ -1,5 +1,8 @@
 #include "client/robot_client.h"
 
+#include <algorithm>
+#include <string_view>
+
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/post.hpp>
 #include <boost/asio/steady_timer.hpp>
@@ -37,8 +40,18 @@ bool rolled_back(const mysqlpp::Exception& e) {
   return bq && bq->errnum() == 1213;
 }
 
+// The node is gone or will not serve: move to the next host. 2000..2999: the client lost
+// the server; 1047: a Galera node that is not primary or not synced ("WSREP has not yet
+// prepared node for application use"); 1180: a commit the node could not replicate
+// ("Error while appending streaming replication fragment (... Not connected to Primary
+// Component)", seen as a cut healed); 1927: the connection was killed (the stall guard).
+// Whether a failed INSERT committed is then looked up, never assumed.
 bool connection_error(const mysqlpp::Exception& e) {
-  if (const auto* bq = dynamic_cast<const mysqlpp::BadQuery*>(&e)) return bq->errnum() >= 2000 && bq->errnum() < 3000;
+  if (const auto* bq = dynamic_cast<const mysqlpp::BadQuery*>(&e)) {
+    const unsigned n = bq->errnum();
+    return (n >= 2000 && n < 3000) || n == 1047 || n == 1180 || n == 1927 ||
+           std::string_view(bq->what()).find("Primary Component") != std::string_view::npos;
+  }
   return dynamic_cast<const mysqlpp::ConnectionFailed*>(&e) != nullptr;
 }
 
@@ -46,7 +59,64 @@ bool connection_error(const mysqlpp::Exception& e) {
 
 RobotClient::RobotClient(DbSettings settings, std::chrono::seconds reconnect_for, WaitPolicy wait)
     : settings_(std::move(settings)), reconnect_for_(reconnect_for), wait_(wait) {
-  conn_ = connect(settings_);
+  hosts_ = endpoints(settings_);
+  open_connection();
+  // Requests of an earlier session of this account are not this one's in doubt.
+  last_request_ = found_at_connect_.value_or(0);
+}
+
+std::string RobotClient::node() const {
+  const DbEndpoint& e = hosts_[host_ % hosts_.size()];
+  return e.host + ":" + std::to_string(e.port);
+}
+
+void RobotClient::open_connection() {
+  std::string failures;
+  for (size_t tried = 0; tried < hosts_.size(); ++tried) {
+    const size_t i = (host_ + tried) % hosts_.size();
+    DbSettings s = settings_;
+    if (!settings_.hosts.empty()) {
+      s.host = hosts_[i].host;
+      s.port = hosts_[i].port;
+      s.socket.clear();
+    }
+    try {
+      auto c = connect(s);
+      RobotChannel ch(*c);
+      // Back on the node of the connection that broke: a statement of it may still be
+      // committing there (a connection the stall guard ended, say); wait until it is gone,
+      // so that what we see below is final.
+      if (i == host_ && connection_id_ != 0) {
+        const auto until = Clock::now() + reconnect_for_;
+        while (ch.session_alive(connection_id_) && Clock::now() < until)
+          std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      }
+      // On another node (the old one down: what it did not replicate did not commit):
+      // wait until this one applied what the cluster committed (our requests, their
+      // answers), then see what of ours is there above the last request known.
+      ch.causal_reads(true);
+      try {
+        found_at_connect_ = ch.request_after(last_request_);
+      } catch (const mysqlpp::BadQuery& e) {
+        // 1146/1142: a database of before rr_mine. Working on: a request in doubt is then
+        // sent again (at-least-once, as before).
+        if (e.errnum() != 1146 && e.errnum() != 1142) throw;
+        found_at_connect_.reset();
+        spdlog::warn("robot client: {}; requests in doubt after a lost connection will be sent again", e.what());
+      }
+      ch.causal_reads(false);
+      connection_id_ = ch.connection_id();
+      conn_ = std::move(c);
+      host_ = i;
+      ++epoch_;
+      return;
+    } catch (const DbError& e) {
+      failures += std::string(failures.empty() ? "" : "; ") + e.what();
+    } catch (const mysqlpp::Exception& e) {
+      failures += std::string(failures.empty() ? "" : "; ") + describe(s) + ": " + e.what();
+    }
+  }
+  throw DbError(hosts_.size() > 1 ? "no database node answers: " + failures : failures);
 }
 
 void RobotClient::set_wait_policy(const WaitPolicy& w) {
@@ -73,9 +143,9 @@ auto RobotClient::with_connection(F&& f) -> decltype(f(std::declval<RobotChannel
   for (;;) {
     try {
       if (!conn_) {
-        conn_ = connect(settings_);
+        open_connection();
         ++reconnects_;
-        spdlog::info("robot client: reconnected as {}", describe(settings_));
+        spdlog::info("robot client: reconnected to {} as {}", node(), settings_.user);
       }
       RobotChannel ch(*conn_);
       return f(ch);
@@ -86,10 +156,14 @@ auto RobotClient::with_connection(F&& f) -> decltype(f(std::declval<RobotChannel
         continue;
       }
       if (!connection_error(e) || Clock::now() > give_up) throw;
-      spdlog::warn("robot client: connection lost ({}); retrying", e.what());
+      spdlog::warn("robot client: connection to {} lost ({}); reconnecting", node(), e.what());
       conn_.reset();
-    } catch (const DbError& e) {  // reconnect failed: the database is still down
+      // The same node first (it refuses at once when it is down), then the next ones; a
+      // node that will not serve (1047) fails its first read there and is passed over.
+      continue;  // at once; the back-off is between rounds over all the hosts
+    } catch (const DbError& e) {  // a round over every host failed: the database is still down
       if (Clock::now() > give_up) throw;
+      spdlog::debug("robot client: {}; again in {:.2f} s", e.what(), wait_s);
       conn_.reset();
     }
     std::this_thread::sleep_for(std::chrono::duration<double>(wait_s));
@@ -100,7 +174,23 @@ auto RobotClient::with_connection(F&& f) -> decltype(f(std::declval<RobotChannel
 unsigned long long RobotClient::send(RequestOp op, const Json& params, const std::optional<std::string>& payload) {
   std::lock_guard lock(mutex_);
   const auto at = Clock::now();
-  const unsigned long long id = with_connection([&](RobotChannel& ch) { return ch.send(op, params, payload, robot_id_); });
+  size_t sent_on = 0;  // the connection (epoch_) the INSERT went out on; 0: not yet
+  const unsigned long long id = with_connection([&](RobotChannel& ch) -> unsigned long long {
+    if (sent_on != 0 && sent_on != epoch_) {
+      // The INSERT broke with its connection: committed or not? open_connection looked,
+      // with causal reads, for a request of ours above the last one known.
+      ++in_doubt_;
+      if (found_at_connect_) {
+        ++found_committed_;
+        spdlog::info("robot client: request {} ({}) had committed; not sent again", *found_at_connect_, name(op));
+        return *found_at_connect_;
+      }
+      spdlog::info("robot client: {} had not committed; sending it again", name(op));
+    }
+    sent_on = epoch_;
+    return ch.send(op, params, payload, robot_id_);
+  });
+  last_request_ = std::max(last_request_, id);
   if (has_answer(op)) due_[id] = at;
   return id;
 }
@@ -109,23 +199,30 @@ void RobotClient::fetch() {
   last_poll_ = Clock::now();
   ++polls_;
   std::erase_if(due_, [&](const auto& d) { return last_poll_ - d.second > kForgetDue; });
-  // An answer counts as taken once its delete has committed, so that a statement retried
-  // (with_connection) reads again exactly the answers not yet taken.
+  // An answer counts as taken once it is handed over (inbox_, last_answer_); its delete
+  // is repeated until it committed, also across a lost connection or a rollback (1213),
+  // so that none is handed over twice and none stays in sa.
   std::vector<unsigned long long> acks;
   with_connection([&](RobotChannel& ch) {
+    while (!unremoved_.empty()) {
+      ch.remove(unremoved_.back());
+      unremoved_.pop_back();
+    }
     for (ReceivedAnswer& a : ch.answers(last_answer_, 1000)) {
-      ch.remove(a.id);
       last_answer_ = a.id;
+      unremoved_.push_back(a.id);
       if (a.request_id) due_.erase(*a.request_id);
       const std::optional<AnswerOp> op = parse_answer_op(a.op);
       if (!a.request_id && (op == AnswerOp::SetPosEnd || op == AnswerOp::Abort)) acks.push_back(a.id);
+      const unsigned long long id = a.id;
       inbox_.push_back(std::move(a));
+      ch.remove(id);
+      unremoved_.pop_back();
     }
     return 0;
   });
   // Pushed operations are acknowledged at once: the server records that we took them.
-  for (unsigned long long id : acks)
-    with_connection([&](RobotChannel& ch) { return ch.send(RequestOp::OpAck, Json{{"answer_id", id}}, std::nullopt, robot_id_); });
+  for (unsigned long long id : acks) send(RequestOp::OpAck, Json{{"answer_id", id}});
 }
 
 std::vector<ReceivedAnswer> RobotClient::receive() {

@@ -4,10 +4,19 @@
 // deleted, pushed operations (SetPosEnd, Abort) acknowledged with OpAck, Alive on a
 // Boost.Asio timer, and reconnection when the database goes away.
 //
-// Delivery: a request whose INSERT fails with the connection is sent again after
-// reconnecting, so nothing the robot sent is lost; if the INSERT had in fact committed
-// before the connection broke, the server sees it twice (at-least-once). Answers are
-// handed over exactly once (ids above the last one handed over).
+// Failover: DbSettings::hosts lists the database nodes (a Galera cluster); when the
+// connection breaks, or the node stops serving (not primary, not synced), the client
+// moves to the next host at once, then waits between rounds over all of them with a
+// growing back-off (50 ms doubling to 2 s), for up to reconnect_for.
+//
+// Delivery (SPEC 5.3): a request whose INSERT broke with the connection is in doubt.
+// After reconnecting the client looks for it (its own waiting requests in rr_mine, its
+// answers in sa_mine, with causal reads on Galera) and sends it again only when it is in
+// neither: a request with an answer is sent exactly once. One without (Alive, SendPos,
+// OpAck) that committed and was served already leaves no trace, and is sent again
+// (at-least-once; a repeated position or Alive is harmless). Answers are handed over
+// exactly once: an answer counts as taken when it is handed over, and its delete is
+// repeated after a lost connection until it committed.
 //
 // Waiting (protocol/wait_policy.h): sa_mine is polled on the WaitPolicy's schedule, by
 // await() and by receive() alike: first_poll_ms after a request that has answers, then
@@ -21,6 +30,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -80,17 +90,32 @@ class RobotClient {
 
   std::optional<unsigned> robot_id() const { return robot_id_; }
   size_t reconnects() const { return reconnects_; }
+  // Requests whose INSERT broke with the connection, and of those, the ones found
+  // committed after reconnecting (not sent again).
+  size_t in_doubt() const { return in_doubt_; }
+  size_t found_committed() const { return found_committed_; }
+  // The node connected to now (or tried last), as "host:port".
+  std::string node() const;
 
  private:
   template <typename F>
   auto with_connection(F&& f) -> decltype(f(std::declval<RobotChannel&>()));
   void fetch();  // sa_mine -> inbox_
+  void open_connection();  // the current host, then the next ones: one round; throws DbError
   Clock::time_point next_poll() const;  // by the wait policy; under mutex_
 
   DbSettings settings_;
   std::chrono::seconds reconnect_for_;
   std::recursive_mutex mutex_;  // one connection, used by the caller and the Alive timer
   std::unique_ptr<mysqlpp::Connection> conn_;
+  std::vector<DbEndpoint> hosts_;  // endpoints(settings_)
+  std::atomic<size_t> host_{0};    // index into hosts_ of the node in use
+  unsigned long long last_request_ = 0;  // the highest own request id known committed
+  std::vector<unsigned long long> unremoved_;  // answers handed over, their delete not yet committed
+  std::atomic<size_t> in_doubt_{0}, found_committed_{0};
+  size_t epoch_ = 0;  // connections opened so far
+  unsigned long long connection_id_ = 0;  // of the connection in use (or lost last), on hosts_[host_]
+  std::optional<unsigned long long> found_at_connect_;  // request_after(last_request_) on connecting
   std::deque<ReceivedAnswer> inbox_;
   unsigned long long last_answer_ = 0;
   std::optional<unsigned> robot_id_;

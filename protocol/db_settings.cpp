@@ -1,5 +1,6 @@
 #include "protocol/db_settings.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -35,6 +36,60 @@ unsigned parse_port(const std::string& v, const std::string& where) {
   }
   throw BadInput(where + ": expected a port number 1..65535, got '" + v + "'");
 }
+
+}  // namespace
+
+std::vector<DbEndpoint> parse_hosts(const std::string& text, const std::string& where) {
+  std::vector<DbEndpoint> out;
+  const auto bad = [&](const std::string& why) {
+    return BadInput(where + ": expected hosts as 'host[:port], host[:port], ...', got '" + text + "' (" + why + ")");
+  };
+  size_t at = 0;
+  while (at <= text.size()) {
+    const size_t comma = std::min(text.find(',', at), text.size());
+    const std::string entry = trim(text.substr(at, comma - at));
+    at = comma + 1;
+    if (entry.empty()) throw bad("an empty entry");
+    DbEndpoint e;
+    // [v6]:port, host:port, or a host alone (a bare IPv6 address has several ':').
+    std::string port;
+    if (entry.front() == '[') {
+      const size_t close = entry.find(']');
+      if (close == std::string::npos) throw bad("'" + entry + "' has no closing ']'");
+      e.host = entry.substr(1, close - 1);
+      const std::string rest = entry.substr(close + 1);
+      if (!rest.empty() && rest.front() != ':') throw bad("'" + entry + "': expected ':port' after ']'");
+      if (!rest.empty()) port = rest.substr(1);
+    } else if (const size_t colon = entry.rfind(':'); colon != std::string::npos && entry.find(':') == colon) {
+      e.host = trim(entry.substr(0, colon));
+      port = trim(entry.substr(colon + 1));
+    } else {
+      e.host = entry;
+    }
+    if (e.host.empty()) throw bad("'" + entry + "' has no host");
+    if (e.host.find_first_of(" \t") != std::string::npos) throw bad("'" + entry + "': a host has no spaces");
+    if (!port.empty() || (entry.back() == ':')) {
+      try {
+        e.port = parse_port(port, where);
+      } catch (const BadInput&) {
+        throw bad("'" + entry + "': the port must be 1..65535");
+      }
+    }
+    out.push_back(std::move(e));
+    if (comma == text.size()) break;
+  }
+  return out;
+}
+
+std::vector<DbEndpoint> endpoints(const DbSettings& s) {
+  if (s.hosts.empty()) return {DbEndpoint{s.host, s.port}};
+  std::vector<DbEndpoint> out = s.hosts;
+  for (DbEndpoint& e : out)
+    if (e.port == 0) e.port = s.port;
+  return out;
+}
+
+namespace {
 
 std::string read_file(const std::string& path, const std::string& what) {
   std::ifstream in(path);
@@ -102,7 +157,8 @@ void apply_config_text(DbSettings& s, Role role, const std::string& text, const 
       else if (key == "port") s.port = parse_port(value, where);
       else if (key == "socket") s.socket = value;
       else if (key == "name") s.database = value;
-      else throw FileFormatError(where + ": expected host, port, socket or name in [database], got '" + key + "'");
+      else if (key == "hosts") s.hosts = parse_hosts(value, where + ": hosts");
+      else throw FileFormatError(where + ": expected host, port, socket, name or hosts in [database], got '" + key + "'");
     } else if (section == mine) {
       if (key == "user") s.user = value;
       else if (key == "password") s.password = value;
@@ -120,6 +176,7 @@ void apply_environment(DbSettings& s) {
   if (const char* v = env("FLEETMAP_DB")) s.database = v;
   if (const char* v = env("FLEETMAP_USER")) s.user = v;
   if (const char* v = env("FLEETMAP_PASSWORD")) s.password = v;
+  if (const char* v = env("FLEETMAP_HOSTS")) s.hosts = parse_hosts(v, "FLEETMAP_HOSTS");
 }
 
 std::map<std::string, std::string> program_settings(Role role, const std::string& config_path) {

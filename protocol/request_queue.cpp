@@ -7,12 +7,18 @@
 
 namespace fleetmap {
 
-std::vector<std::string> RequestQueue::waiting_accounts(size_t limit) {
+std::vector<std::string> RequestQueue::waiting_accounts(size_t limit, unsigned modulus, unsigned remainder) {
   // The head of the queue by primary key, deduplicated here: a GROUP BY over all of rr
   // costs more the longer the queue grows, just when the server is behind
   // (fleetmap-loadgen: 11 ms at 4 700 waiting rows, against 0.2 ms for this).
   mysqlpp::Query q = c_.query();
-  q << "SELECT db_user FROM rr ORDER BY id LIMIT " << limit * 16;
+  if (modulus > 1)
+    // rr's primary key in order, each row's robot by uq_robots_db_user: the head of this
+    // share's queue, however long the other shares' queues are.
+    q << "SELECT rr.db_user FROM rr STRAIGHT_JOIN robots b ON b.db_user = rr.db_user WHERE b.id % " << modulus
+      << " = " << remainder << " ORDER BY rr.id LIMIT " << limit * 16;
+  else
+    q << "SELECT db_user FROM rr ORDER BY id LIMIT " << limit * 16;
   std::vector<std::string> out;
   for (const mysqlpp::Row& r : q.store()) {
     std::string user = sql::to_string(r[0]);

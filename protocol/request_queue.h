@@ -34,8 +34,10 @@ class RequestQueue {
  public:
   explicit RequestQueue(mysqlpp::Connection& c) : c_(c) {}
 
-  // Accounts with waiting requests, the longest-waiting first (a plain read: no locks).
-  std::vector<std::string> waiting_accounts(size_t limit);
+  // Accounts with waiting requests, the longest-waiting first (a plain read: no locks);
+  // with modulus > 1 only those of robots whose id mod modulus is remainder (a server's
+  // share of the fleet, server/core/robot_partition.h).
+  std::vector<std::string> waiting_accounts(size_t limit, unsigned modulus = 1, unsigned remainder = 0);
 
   // The oldest requests of these accounts in id order: at most per_account of each (a
   // prefix of each account's queue) and total in all.

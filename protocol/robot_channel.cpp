@@ -39,4 +39,38 @@ void RobotChannel::remove(unsigned long long answer_id) {
   q.execute();
 }
 
+std::optional<unsigned long long> RobotChannel::request_after(unsigned long long after) {
+  // rr_mine first: a request served between the two reads shows its answer in the second.
+  mysqlpp::Query q = c_.query();
+  q << "SELECT MAX(id) FROM rr_mine WHERE id > " << after;
+  mysqlpp::StoreQueryResult w = q.store();
+  if (!w.empty() && !w[0][0].is_null()) return sql::to_uint(w[0][0]);
+  mysqlpp::Query a = c_.query();
+  a << "SELECT MAX(request_id) FROM sa_mine WHERE request_id > " << after;
+  mysqlpp::StoreQueryResult r = a.store();
+  if (!r.empty() && !r[0][0].is_null()) return sql::to_uint(r[0][0]);
+  return std::nullopt;
+}
+
+unsigned long long RobotChannel::connection_id() {
+  mysqlpp::Query q = c_.query("SELECT CONNECTION_ID()");
+  return sql::to_uint(q.store()[0][0]);
+}
+
+bool RobotChannel::session_alive(unsigned long long connection_id) {
+  mysqlpp::Query q = c_.query();
+  q << "SELECT COUNT(*) FROM information_schema.PROCESSLIST WHERE ID = " << connection_id;
+  return sql::to_uint(q.store()[0][0]) > 0;
+}
+
+void RobotChannel::causal_reads(bool on) {
+  try {
+    mysqlpp::Query q = c_.query();
+    q << "SET SESSION wsrep_sync_wait = " << (on ? 1 : 0);
+    q.execute();
+  } catch (const mysqlpp::BadQuery& e) {
+    if (e.errnum() != 1193) throw;  // 1193: unknown variable, a MariaDB without wsrep
+  }
+}
+
 }  // namespace fleetmap

@@ -30,6 +30,23 @@ class RobotChannel {
   std::vector<ReceivedAnswer> answers(unsigned long long after, size_t limit);
   void remove(unsigned long long answer_id);
 
+  // The highest id of this account's requests above `after` that the database holds,
+  // waiting (rr_mine) or answered (sa_mine's request_id); nullopt: none. After a lost
+  // connection, tells whether the INSERT in flight committed (SPEC 5.3): requests of one
+  // robot get growing ids, so above the last acknowledged one can be only that one.
+  std::optional<unsigned long long> request_after(unsigned long long after);
+
+  // Galera: reads from now on wait until this node has applied every transaction the
+  // cluster committed before them (wsrep_sync_wait), so that after moving to another node
+  // the robot sees its own requests and answers. A no-op without Galera.
+  void causal_reads(bool on);
+
+  // This connection's id, and whether a connection of this id still runs on this node
+  // (a robot sees its own sessions in the process list). A connection that broke, or that
+  // the server ended, may still be committing its last statement there.
+  unsigned long long connection_id();
+  bool session_alive(unsigned long long connection_id);
+
  private:
   mysqlpp::Connection& c_;
 };

@@ -1,5 +1,7 @@
 #include "protocol/robot_store.h"
 
+#include <algorithm>
+
 #include "common/geometry/number_format.h"
 #include "protocol/sql_util.h"
 #include "protocol/task_lifecycle.h"
@@ -182,24 +184,25 @@ void RobotStore::set_task_abort_answer(unsigned long long task_id, unsigned long
   q.execute();
 }
 
-std::vector<unsigned> RobotStore::robots_with_pushes(size_t limit) {
+std::vector<unsigned> RobotStore::robots_with_pushes(size_t limit, unsigned modulus, unsigned remainder) {
   mysqlpp::Query q = c_.query();
   q << "SELECT DISTINCT t.robot_id FROM tasks t JOIN robots r ON r.id = t.robot_id"
        " WHERE r.magic IS NOT NULL AND r.removed_at IS NULL AND r.state <> "
     << sql::quoted(RobotState::Lost) << " AND t.state IN " << sql::open_task_states()
     << " AND ((t.answer_id IS NULL) OR (t.abort_requested_at IS NOT NULL AND t.abort_answer_id IS NULL))"
-    << " LIMIT " << limit;
+    << " AND r.id % " << std::max(modulus, 1u) << " = " << remainder << " LIMIT " << limit;
   std::vector<unsigned> out;
   for (const mysqlpp::Row& r : q.store()) out.push_back(static_cast<unsigned>(sql::to_uint(r[0])));
   return out;
 }
 
-std::vector<unsigned> RobotStore::silent_robots(double seconds, size_t limit) {
+std::vector<unsigned> RobotStore::silent_robots(double seconds, size_t limit, unsigned modulus, unsigned remainder) {
   mysqlpp::Query q = c_.query();
   q << "SELECT r.id FROM robots r WHERE r.magic IS NOT NULL AND r.removed_at IS NULL AND r.state <> "
     << sql::quoted(RobotState::Lost) << " AND r.last_seen < SYSDATE(6) - INTERVAL "
     << static_cast<long long>(seconds * 1e6) << " MICROSECOND"
-    << " AND NOT EXISTS (SELECT 1 FROM rr WHERE rr.db_user = r.db_user) LIMIT " << limit;
+    << " AND NOT EXISTS (SELECT 1 FROM rr WHERE rr.db_user = r.db_user) AND r.id % " << std::max(modulus, 1u)
+    << " = " << remainder << " LIMIT " << limit;
   std::vector<unsigned> out;
   for (const mysqlpp::Row& r : q.store()) out.push_back(static_cast<unsigned>(sql::to_uint(r[0])));
   return out;

@@ -71,9 +71,9 @@ class RobotStore {
   void set_task_abort_answer(unsigned long long task_id, unsigned long long answer_id);
 
   // Robots with a task whose SetPosEnd or Abort is still to be pushed.
-  std::vector<unsigned> robots_with_pushes(size_t limit);
+  std::vector<unsigned> robots_with_pushes(size_t limit, unsigned modulus = 1, unsigned remainder = 0);
   // Registered robots silent for longer than `seconds` with nothing waiting in rr.
-  std::vector<unsigned> silent_robots(double seconds, size_t limit);
+  std::vector<unsigned> silent_robots(double seconds, size_t limit, unsigned modulus = 1, unsigned remainder = 0);
 
  private:
   RobotRow read_robot(const mysqlpp::Row& r);

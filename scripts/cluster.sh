@@ -89,6 +89,28 @@ write_node_conf() {
   mv "$(conf_of "$n").tmp" "$(conf_of "$n")"
 }
 
+# After a crash (kill -9) grastate.dat says seqno -1: the node does not know where it
+# stopped and asks for a full state transfer (rsync: the whole data directory, tens of
+# seconds, the donor blocked meanwhile). Its position is in InnoDB: mariadbd
+# --wsrep-recover prints it, and with it in grastate.dat the node asks for the missing
+# transactions only (IST, from a donor's gcache), as Galera's own start scripts do.
+recover_position() {
+  local n="$1" g; g="$(node_home "$n")/data/grastate.dat"
+  [ -f "$g" ] && [ "$(awk '$1=="seqno:"{print $2}' "$g")" = -1 ] || return 0
+  local log; log="$(node_home "$n")/recover.log"
+  local mariadbd; mariadbd="$(command -v mariadbd || echo /usr/sbin/mariadbd)"
+  # shellcheck disable=SC2046  # wsrep_args: the node's options, one word each
+  "$mariadbd" --no-defaults --user="$ME" --datadir="$(node_home "$n")/data" --log-error="$log" \
+    $(wsrep_args "$n" 0) --wsrep-recover >/dev/null 2>&1 || true
+  local pos; pos="$( { grep -o 'Recovered position: [^ ]*' "$log" 2>/dev/null || true; } | tail -n 1 | awk '{print $3}')"
+  rm -f "$log"
+  case "$pos" in
+    *:[0-9]*) sed -i "s/^seqno:.*/seqno:   ${pos##*:}/" "$g"
+              [ "$(id -u)" = 0 ] && chown -R nobody:nogroup "$(node_home "$n")/data"
+              echo "cluster.sh: node $n recovered its position ${pos##*:} after a crash" ;;
+  esac
+}
+
 start_node() {  # start_node N BOOTSTRAP
   local n="$1" boot="$2"
   if running "$n"; then echo "cluster.sh: node $n already running (port $(sql_port "$n"))"; return; fi
@@ -103,6 +125,7 @@ start_node() {  # start_node N BOOTSTRAP
     for m in $(seq 1 $NODES); do [ -f "$(conf_of "$m")" ] && [ "$m" != "$n" ] && { src="$(conf_of "$m")"; break; }; done
     [ -n "$src" ] && [ ! -f "$(conf_of "$n")" ] && write_node_conf "$n" "$src"
   fi
+  [ "$boot" = 1 ] || recover_position "$n"
   echo "cluster.sh: starting node $n (port $(sql_port "$n"))$([ "$boot" = 1 ] && echo ', bootstrapping the cluster')"
   local joiner=1; [ "$load" = 1 ] && joiner=0
   FLEETMAP_MYSQLD_ARGS="$(wsrep_args "$n" "$boot")" FLEETMAP_JOINER="$joiner" db "$n" start >/dev/null
@@ -117,13 +140,15 @@ wsrep_status() {  # wsrep_status N VAR
   db "$1" sql -N -e "SHOW GLOBAL STATUS LIKE '$2'" 2>/dev/null | awk '{print $2}'
 }
 
+# A joiner applies what the others commit meanwhile before it is Synced: under heavy
+# writes on a loaded machine that takes minutes (FLEETMAP_CLUSTER_SYNC_S, default 180).
 wait_synced() {
-  local n="$1" i
-  for i in $(seq 1 240); do
+  local n="$1" i limit="${FLEETMAP_CLUSTER_SYNC_S:-180}"
+  for i in $(seq 1 $((limit * 4))); do
     [ "$(wsrep_status "$n" wsrep_local_state_comment)" = Synced ] && return 0
     sleep 0.25
   done
-  die "node $n did not reach Synced within 60 s, see $(node_home "$n")/mysqld.log"
+  die "node $n did not reach Synced within $limit s, see $(node_home "$n")/mysqld.log"
 }
 
 start_all() {

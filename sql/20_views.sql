@@ -68,3 +68,11 @@ CREATE OR REPLACE SQL SECURITY DEFINER VIEW sa_mine AS
   SELECT id, robot_id, db_user, request_id, op, params, payload, created_at
   FROM sa FORCE INDEX (ix_sa_mine)
   WHERE db_user = SUBSTRING_INDEX(USER(), '@', 1) AND sentinel = 0;
+
+-- Each robot sees its own requests still waiting (ids and ops only; SPEC 5.3): a robot
+-- whose connection broke during its INSERT cannot know whether it committed; it looks
+-- here, and in sa_mine for an answer to it, before sending it again (client/robot_client.cpp,
+-- docs/galera.md "Failover"). A plain read: it takes no lock the server waits on. ix_rr_user
+-- serves it.
+CREATE OR REPLACE SQL SECURITY DEFINER VIEW rr_mine AS
+  SELECT id, op, created_at FROM rr WHERE db_user = SUBSTRING_INDEX(USER(), '@', 1);

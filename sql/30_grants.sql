@@ -49,6 +49,8 @@ GRANT SELECT ON v_answers TO fleetmap_inspector_role;
 GRANT SELECT ON v_observed_objects TO fleetmap_inspector_role;
 GRANT SELECT ON v_gps_fixes TO fleetmap_inspector_role;
 
--- robot: INSERT requests; read and delete its own answers only (SPEC 5.1).
+-- robot: INSERT requests; read and delete its own answers only (SPEC 5.1); see which of
+-- its own requests still wait (rr_mine: after a lost connection, was the INSERT committed?).
 GRANT INSERT ON rr TO fleetmap_robot_role;
 GRANT SELECT, DELETE ON sa_mine TO fleetmap_robot_role;
+GRANT SELECT ON rr_mine TO fleetmap_robot_role;

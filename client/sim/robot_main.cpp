@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
   CLI::App app{"fleetmap-robot: a simulated robot (differential drive, noisy odometry, 2D laser, compass) that "
                "registers with the fleetmap server, localizes on the maps it receives, reports its pose at 3 Hz "
                "and drives to the goals operators give it."};
-  std::optional<std::string> config, host, user, password_file, world;
+  std::optional<std::string> config, host, hosts, user, password_file, world;
   std::optional<unsigned> port;
   std::vector<double> start, kidnap;
   double duration = 1e9;
@@ -79,6 +79,10 @@ int main(int argc, char** argv) {
   app.add_option("--config", config, "config file (the [robot] section: user, password or password_file)");
   app.add_option("--host", host, "database host");
   app.add_option("--port", port, "database TCP port");
+  app.add_option("--hosts", hosts,
+                 "database nodes to fail over between, in order: 'host[:port],host[:port],...' (a Galera cluster; "
+                 "a host without :port has --port); overrides [database] hosts and $FLEETMAP_HOSTS")
+      ->type_name("LIST");
   app.add_option("--user", user, "the robot's account");
   app.add_option("--password-file", password_file, "file holding the account's password")->check(CLI::ExistingFile);
   app.add_option("--world", world, "ground-truth map file (seed or AMRL); default: the map the server sends on Ready");
@@ -140,8 +144,9 @@ int main(int argc, char** argv) {
     std::signal(SIGTERM, on_signal);
     std::signal(SIGINT, on_signal);
     DbSettings s = load_settings(Role::Robot, config);
-    if (host) { s.host = *host; s.socket.clear(); }
+    if (host) { s.host = *host; s.socket.clear(); s.hosts.clear(); }  // one host: no failover list
     if (port) s.port = *port;
+    if (hosts) s.hosts = parse_hosts(*hosts, "--hosts");  // BadInput: exit 2
     if (user) s.user = *user;
     if (password_file) s.password = read_password_file(*password_file);
     s.socket.clear();  // robots connect over the network, as real ones do

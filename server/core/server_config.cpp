@@ -54,6 +54,7 @@ void ServerConfig::apply(const std::map<std::string, std::string>& s) {
     else if (k == "object_ttl_s") object_ttl_s = positive(k, v);
     else if (k == "commit_delay_ms") commit_delay_ms = number(k, v, true);
     else if (k == "robot_block_ms") robot_block_ms = positive(k, v);
+    else if (k == "partition") partition = parse_robot_partition(v);
     else if (k == "lock_wait_timeout_s") lock_wait_timeout_s = static_cast<int>(count(k, v, 3600));
     else throw std::invalid_argument("[server] unknown setting '" + k + "'");
   }

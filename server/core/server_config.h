@@ -4,6 +4,8 @@
 #include <map>
 #include <string>
 
+#include "server/core/robot_partition.h"
+
 namespace fleetmap {
 
 struct ServerConfig {
@@ -28,6 +30,7 @@ struct ServerConfig {
   int lock_wait_timeout_s = 1;        // then find and end the robot connection that blocks
   double robot_block_ms = 2000;       // a robot blocking another robot this long is ended (SPEC 5.3)
   double commit_delay_ms = 0;         // fault injection for crash tests: a wider window before COMMIT
+  RobotPartition partition;           // the robots this server claims (several servers: disjoint shares)
 
   // Applies "key = value" settings; throws std::invalid_argument naming a bad key or value.
   void apply(const std::map<std::string, std::string>& settings);

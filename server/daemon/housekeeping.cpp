@@ -27,8 +27,12 @@ std::optional<HousekeepingSchedule::Pass> HousekeepingSchedule::due(Clock::time_
 size_t Housekeeping::run(const HousekeepingSchedule::Pass& pass) {
   const size_t pushed = push_operations();
   mark_lost_robots();
-  drop_orphan_requests();
-  if (pass.expire_observations) SceneStore(c_).expire_observations();
+  // Work on no robot: the first share alone does it, so that partitioned servers on
+  // several Galera nodes do not conflict over the same rows.
+  if (config_.partition.index == 0) {
+    drop_orphan_requests();
+    if (pass.expire_observations) SceneStore(c_).expire_observations();
+  }
   return pushed;
 }
 
@@ -49,7 +53,8 @@ size_t Housekeeping::push_operations() {
   RobotStore robots(c_);
   RequestQueue queue(c_);
   size_t pushed = 0;
-  for (unsigned id : robots.robots_with_pushes(config_.batch_robots)) {
+  // Only this server's share (robot_partition.h): another server claims the others.
+  for (unsigned id : robots.robots_with_pushes(config_.batch_robots, config_.partition.count, config_.partition.index)) {
     Transaction tx(c_);
     std::optional<RobotRow> robot = robots.claim(id);
     if (!robot) continue;  // another worker or server holds it
@@ -88,7 +93,7 @@ size_t Housekeeping::mark_lost_robots() {
   RobotStore robots(c_);
   size_t lost = 0;
   const double silent_s = lost_after_s(config_);
-  for (unsigned id : robots.silent_robots(silent_s, config_.batch_robots)) {
+  for (unsigned id : robots.silent_robots(silent_s, config_.batch_robots, config_.partition.count, config_.partition.index)) {
     Transaction tx(c_);
     std::optional<RobotRow> robot = robots.claim(id);
     if (!robot) continue;

@@ -190,7 +190,8 @@ size_t RequestLoop::serve(bool careful) {
   RequestQueue queue(*conn_);
   RobotStore robots(*conn_);
   const std::vector<std::string> waiting =
-      queue.waiting_accounts(config_.batch_robots * static_cast<size_t>(std::max(1, config_.workers)));
+      queue.waiting_accounts(config_.batch_robots * static_cast<size_t>(std::max(1, config_.workers)),
+                             config_.partition.count, config_.partition.index);
   if (waiting.empty()) return 0;
 
   // Round trips of a pass (docs/benchmarks.md): the queue head above; START TRANSACTION

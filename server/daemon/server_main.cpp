@@ -1,6 +1,7 @@
 // fleetmap-server: the map server daemon (SPEC 5). Parses options, then runs worker
 // threads of RequestLoop until SIGTERM or SIGINT; each finishes the transaction in hand.
 #include <csignal>
+#include <cstdlib>
 #include <iostream>
 #include <thread>
 #include <vector>
@@ -52,6 +53,9 @@ int main(int argc, char** argv) {
           "SetObject: an observed object expires this long after it was last seen, s (default 300)");
   setting("--robot-block-ms", "robot_block_ms", "MS",
           "a robot connection that blocks another robot's this long is ended, ms (default 2000)");
+  setting("--partition", "partition", "I/N",
+          "serve only the robots whose id mod N is I, so that N servers (e.g. on N Galera nodes) share the fleet "
+          "without claiming the same robot; also $FLEETMAP_SERVER_PARTITION (default 0/1: every robot)");
   setting("--commit-delay-ms", "commit_delay_ms", "MS",
           "tests only: wait this long before each batch's COMMIT, so that a SIGKILL lands in flight (default 0)");
   std::string log_level = "info";
@@ -66,11 +70,21 @@ int main(int argc, char** argv) {
     // A bad setting is exit 2, an unreadable config file or no database 1 (exit_code_for).
     const DbSettings db = ctx.settings();
     cfg.apply(db.program);
+    // Between the file and the flags, as FLEETMAP_* are for the connection: a service
+    // unit or container sets a server's share without a file of its own.
+    if (const char* p = std::getenv("FLEETMAP_SERVER_PARTITION"); p && *p) {
+      try {
+        cfg.apply({{"partition", p}});
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("FLEETMAP_SERVER_PARTITION: ") + e.what());  // exit 2
+      }
+    }
     cfg.apply(flags);
     if (check) {
       connect(db);
       std::cout << "fleetmap-server: connected as " << describe(db) << "; alive period " << cfg.alive_period_s
-                << " s, " << cfg.workers << " workers\n";
+                << " s, " << cfg.workers << " workers, robots " << (cfg.partition.all() ? "all" : "with id mod " +
+                std::to_string(cfg.partition.count) + " = " + std::to_string(cfg.partition.index)) << "\n";
       return exit_code::kOk;
     }
 
@@ -79,7 +93,8 @@ int main(int argc, char** argv) {
     check_account(db);
     std::signal(SIGTERM, on_signal);
     std::signal(SIGINT, on_signal);
-    spdlog::info("fleetmap-server starting: {} worker(s), database {}", cfg.workers, describe(db));
+    spdlog::info("fleetmap-server starting: {} worker(s), database {}, robots {}", cfg.workers, describe(db),
+                 cfg.partition.all() ? std::string("all") : "of partition " + cfg.partition.text());
     MapCache cache;
     PlannerCache planners;
     TopoCache graphs;  // the maps' topological graphs, for GetPath

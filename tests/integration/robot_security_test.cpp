@@ -207,7 +207,7 @@ TEST_F(RobotSecurityAccount, ReadsNoTableNorViewButItsOwnAnswers) {
   auto adm = admin();
   std::vector<std::string> views;
   for (const auto& r : rows(*adm, "SELECT TABLE_NAME FROM information_schema.VIEWS WHERE TABLE_SCHEMA = DATABASE()"
-                                  " AND TABLE_NAME <> 'sa_mine' ORDER BY TABLE_NAME"))
+                                  " AND TABLE_NAME NOT IN ('sa_mine', 'rr_mine') ORDER BY TABLE_NAME"))
     views.push_back(r[0]);
   ASSERT_GE(views.size(), 8u);
   EXPECT_NE(std::find(views.begin(), views.end(), "v_requests"), views.end());
@@ -238,18 +238,19 @@ TEST_F(RobotSecurityAccount, ReadsNoTableNorViewButItsOwnAnswers) {
            "SELECT 1 INTO OUTFILE '/tmp/fleetmap_sec_evil_out'",
        })
     EXPECT_NE(sql_error(a(), sql), 0u) << sql;
-  // What the robot may read: its own answers.
+  // What the robot may read: its own answers, and the ids and ops of its own waiting requests.
   EXPECT_EQ(sql_error(a(), "SELECT * FROM sa_mine"), 0u);
+  EXPECT_EQ(sql_error(a(), "SELECT id, op, created_at FROM rr_mine"), 0u);
   // Files stay closed: LOAD_FILE gives NULL without the FILE privilege.
   EXPECT_EQ(one(a(), "SELECT LOAD_FILE('/etc/passwd') IS NULL"), "1");
   // The catalogue shows the robot only its two objects.
   std::set<std::string> shown;
   for (const auto& r : rows(a(), "SHOW TABLES")) shown.insert(r[0]);
-  EXPECT_EQ(shown, (std::set<std::string>{"rr", "sa_mine"}));
+  EXPECT_EQ(shown, (std::set<std::string>{"rr", "rr_mine", "sa_mine"}));
   shown.clear();
   for (const auto& r : rows(a(), "SELECT TABLE_NAME FROM information_schema.TABLES WHERE TABLE_SCHEMA = DATABASE()"))
     shown.insert(r[0]);
-  EXPECT_EQ(shown, (std::set<std::string>{"rr", "sa_mine"}));
+  EXPECT_EQ(shown, (std::set<std::string>{"rr", "rr_mine", "sa_mine"}));
   // Other sessions (the administrator's, the other robot's) are invisible, and so are their queries.
   rows(*adm, "SELECT 1");
   for (const char* sql : {"SHOW FULL PROCESSLIST", "SELECT ID, USER, INFO FROM information_schema.PROCESSLIST"})
@@ -369,6 +370,22 @@ TEST_F(RobotSecurityAccount, RrIsInsertOnlyEvenForItsOwnRows) {
   EXPECT_EQ(one(*adm, "SELECT params FROM rr WHERE id = " + sid), "{}");
   EXPECT_EQ(scalar("SELECT COUNT(*) FROM rr WHERE db_user = 'sec_a'"), 1);
   EXPECT_EQ(scalar("SELECT COUNT(*) FROM rr WHERE db_user = 'sec_b'"), 0);
+}
+
+TEST_F(RobotSecurityAccount, RrMineShowsOnlyItsOwnWaitingRequestsAndIsReadOnly) {
+  const auto mine = a_->send("Alive");
+  const auto theirs = b_->send("GetPosIni");
+  EXPECT_EQ(one(a(), "SELECT GROUP_CONCAT(id) FROM rr_mine"), std::to_string(mine));
+  EXPECT_EQ(one(a(), "SELECT COUNT(*) FROM rr_mine WHERE id = " + std::to_string(theirs)), "0");
+  EXPECT_EQ(one(b_->connection(), "SELECT GROUP_CONCAT(op) FROM rr_mine"), "GetPosIni");
+  // No params nor payload: what the request carried stays the server's to read.
+  EXPECT_NE(sql_error(a(), "SELECT params FROM rr_mine"), 0u);
+  EXPECT_NE(sql_error(a(), "SELECT payload FROM rr_mine"), 0u);
+  for (const std::string& sql : {"DELETE FROM rr_mine WHERE id = " + std::to_string(mine),
+                                 std::string("UPDATE rr_mine SET op = 'Ready'"),
+                                 std::string("INSERT INTO rr_mine (op) VALUES ('Alive')")})
+    EXPECT_NE(sql_error(a(), sql), 0u) << sql;
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM rr WHERE db_user = 'sec_a'"), 1);
 }
 
 TEST_F(RobotSecurityAccount, TheTriggerStampsAccountTimeAndId) {

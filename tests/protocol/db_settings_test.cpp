@@ -72,5 +72,56 @@ TEST(DbSettings, ProgramSettingsOfAnotherRoleNeedNotReadItsPasswordFile) {
   std::filesystem::remove(path);
 }
 
+TEST(DbSettings, HostsListTheNodesToFailOverBetweenInOrder) {
+  const DbSettings s = parse(Role::Robot,
+                             "[database]\n"
+                             "port = 3310\n"
+                             "hosts = db1:3306, db2 ,[::1]:3307,10.0.0.4   # the Galera nodes\n");
+  ASSERT_EQ(s.hosts.size(), 4u);
+  EXPECT_EQ(s.hosts[0], (DbEndpoint{"db1", 3306}));
+  EXPECT_EQ(s.hosts[1], (DbEndpoint{"db2", 0}));
+  EXPECT_EQ(s.hosts[2], (DbEndpoint{"::1", 3307}));
+  EXPECT_EQ(s.hosts[3], (DbEndpoint{"10.0.0.4", 0}));
+  // A host without a port gets the [database] port, wherever `port` stands in the file.
+  const std::vector<DbEndpoint> e = endpoints(s);
+  EXPECT_EQ(e[1], (DbEndpoint{"db2", 3310}));
+  EXPECT_EQ(e[3], (DbEndpoint{"10.0.0.4", 3310}));
+  EXPECT_EQ(e[0], (DbEndpoint{"db1", 3306}));
+  // Without hosts: host and port alone.
+  const DbSettings one = parse(Role::Robot, "[database]\nhost = h\nport = 3311\n");
+  EXPECT_EQ(endpoints(one), (std::vector<DbEndpoint>{{"h", 3311}}));
+}
+
+TEST(DbSettings, MalformedHostsAreRefusedWithTheLineAndTheEntry) {
+  for (const char* bad : {"hosts =", "hosts = db1,,db2", "hosts = db1:", "hosts = db1:0", "hosts = db1:70000",
+                          "hosts = db1:x", "hosts = :3306", "hosts = [::1", "hosts = [::1]x", "hosts = a b:1"}) {
+    try {
+      parse(Role::Robot, std::string("[database]\n") + bad + "\n");
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const BadInput& e) {
+      EXPECT_NE(std::string(e.what()).find("test.conf:2: hosts"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("expected hosts as 'host[:port]"), std::string::npos) << e.what();
+    }
+  }
+  // Unknown keys of [database] are still refused, naming the ones it knows.
+  try {
+    parse(Role::Robot, "[database]\nhost_list = a\n");
+    ADD_FAILURE() << "accepted host_list";
+  } catch (const FileFormatError& e) {
+    EXPECT_NE(std::string(e.what()).find("hosts"), std::string::npos) << e.what();
+  }
+}
+
+TEST(DbSettings, FleetmapHostsOverridesTheFile) {
+  DbSettings s = parse(Role::Robot, "[database]\nhosts = a:1, b:2\n");
+  ::setenv("FLEETMAP_HOSTS", "c:3", 1);
+  apply_environment(s);
+  ::unsetenv("FLEETMAP_HOSTS");
+  EXPECT_EQ(s.hosts, (std::vector<DbEndpoint>{{"c", 3}}));
+  ::setenv("FLEETMAP_HOSTS", "c:3,", 1);
+  EXPECT_THROW(apply_environment(s), BadInput);
+  ::unsetenv("FLEETMAP_HOSTS");
+}
+
 }  // namespace
 }  // namespace fleetmap
