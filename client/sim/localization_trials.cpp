@@ -34,6 +34,71 @@ const char* describe(const ParticleFilterOptions& f) {
   return f.sensor.combination == BeamCombination::Harmonic ? "eq. (6) harmonic" : "beam product";
 }
 
+std::shared_ptr<const GlobalSearch> make_search(const Map& map, const ParticleFilterOptions& f) {
+  if (!f.global_search) return nullptr;
+  GlobalSearchOptions so = f.search;
+  so.field.margin = f.laser.rmax;
+  so.field.laser_height = f.laser.laser_height;
+  so.threads = f.threads;
+  return std::make_shared<GlobalSearch>(map, so);
+}
+
+// One global localization as at boot (SimRobot::localize): a filter initialised from the
+// compass alone, a look around then a wander from `start`, up to max_updates updates.
+// The caller draws the laser's and the driver's seeds (each caller in its own order, so
+// that its figures stay those of its seeds).
+struct GlobalRunSeeds {
+  uint64_t laser = 0, drive = 0;
+};
+
+struct GlobalRun {
+  int updates = 0;       // updates made
+  int first_within = -1;  // update from which the estimate stayed within bounds; -1: not within at the end
+  int converged_at = -1;  // first update whose estimate converged (PoseEstimate::converged); -1: none
+  bool within = false;   // the last update's estimate within 0.3 m and 3 degrees
+  double error = 0;      // metres, the last update's
+};
+
+bool within_bounds(const Pose& e, const Pose& truth) {
+  return distance(e, truth) < 0.3 && std::fabs(angle_diff(e.theta, truth.theta)) < deg2rad(3.0);
+}
+
+// stop_when_converged: end at the first converged estimate (a recovery trusts it then);
+// otherwise run all max_updates (a trial asks that the estimate stays within).
+GlobalRun run_global_localization(const Map& map, std::shared_ptr<const RayCaster> world,
+                                  std::shared_ptr<const GlobalSearch> search, const ParticleFilterOptions& fo,
+                                  const TrialSettings& s, const Pose& start, GlobalRunSeeds seeds,
+                                  std::mt19937_64& rng, int max_updates, bool stop_when_converged) {
+  ParticleFilter pf(map, world, fo);
+  if (search) pf.set_global_search(std::move(search));
+  LaserSimulator laser(world, s.laser, seeds.laser);
+  DriveOptions drive;
+  drive.step = s.global_step;
+  drive.look_around_steps = s.look_around;
+  drive.look_around_turn = s.look_around_turn;
+  WanderDriver driver(world, start, drive, seeds.drive);
+  Pose truth = start;
+  pf.init_global(compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
+  GlobalRun run;
+  for (int u = 1; u <= max_updates; ++u) {
+    if (u > 1) {
+      const DriveStep st = driver.step();
+      truth = st.truth;
+      pf.predict(st.odometry);
+    }
+    pf.update(laser.scan(truth), compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
+    const PoseEstimate e = pf.estimate();
+    run.updates = u;
+    run.error = distance(e.pose, truth);
+    run.within = within_bounds(e.pose, truth);
+    if (run.within && run.first_within < 0) run.first_within = u;
+    if (!run.within) run.first_within = -1;  // must stay within to the end
+    if (e.converged && run.converged_at < 0) run.converged_at = u;
+    if (stop_when_converged && e.converged) break;
+  }
+  return run;
+}
+
 }  // namespace
 
 GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s) {
@@ -41,48 +106,21 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
   const FreeSpace free_space(map);
   const std::vector<double> beams = evenly_spread_angles(s.laser.beams, s.laser.fov);
   // One search (its likelihood field) for every trial on this map, as one robot keeps it.
-  std::shared_ptr<const GlobalSearch> search;
-  if (s.filter.global_search) {
-    const auto t0 = Clock::now();
-    GlobalSearchOptions so = s.filter.search;
-    so.field.margin = s.filter.laser.rmax;
-    so.field.laser_height = s.filter.laser.laser_height;
-    so.threads = s.filter.threads;
-    search = std::make_shared<GlobalSearch>(map, so);
-    res.setup_seconds = seconds_since(t0);
-  }
+  const auto setup = Clock::now();
+  const std::shared_ptr<const GlobalSearch> search = make_search(map, s.filter);
+  if (search) res.setup_seconds = seconds_since(setup);
   const auto t0 = Clock::now();
   for (int t = 0; t < s.trials; ++t) {
     std::mt19937_64 rng(s.seed * 1000003 + t);
     const Pose start = pick_start_pose(free_space, *world, beams, s.min_hit_fraction, 0.5, rng);
     ParticleFilterOptions fo = s.filter;
     fo.seed = s.seed * 7919 + t;
-    ParticleFilter pf(map, world, fo);
-    if (search) pf.set_global_search(search);
-    LaserSimulator laser(world, s.laser, rng());
-    DriveOptions drive;
-    drive.step = s.global_step;
-    drive.look_around_steps = s.look_around;
-    drive.look_around_turn = s.look_around_turn;
-    WanderDriver driver(world, start, drive, rng());
-    Pose truth = start;
-    pf.init_global(compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
-    int first = -1;
-    double err = 0;
-    for (int u = 1; u <= s.updates; ++u) {
-      if (u > 1) {
-        const DriveStep st = driver.step();
-        truth = st.truth;
-        pf.predict(st.odometry);
-      }
-      pf.update(laser.scan(truth), compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
-      const PoseEstimate e = pf.estimate();
-      err = distance(e.pose, truth);
-      const double err_theta = std::fabs(angle_diff(e.pose.theta, truth.theta));
-      const bool within = err < 0.3 && err_theta < deg2rad(3.0);
-      if (within && first < 0) first = u;
-      if (!within) first = -1;  // must stay within to the end
-    }
+    GlobalRunSeeds seeds;
+    seeds.laser = rng();
+    seeds.drive = rng();
+    const GlobalRun run = run_global_localization(map, world, search, fo, s, start, seeds, rng, s.updates, false);
+    const int first = run.first_within;
+    const double err = run.error;
     ++res.trials;
     if (first > 0) {
       ++res.converged;
@@ -140,15 +178,6 @@ TrackResult run_tracking_trial(const Map& map, std::shared_ptr<const RayCaster> 
 }
 
 namespace {
-
-std::shared_ptr<const GlobalSearch> make_search(const Map& map, const ParticleFilterOptions& f) {
-  if (!f.global_search) return nullptr;
-  GlobalSearchOptions so = f.search;
-  so.field.margin = f.laser.rmax;
-  so.field.laser_height = f.laser.laser_height;
-  so.threads = f.threads;
-  return std::make_shared<GlobalSearch>(map, so);
-}
 
 // A tracking filter (KLD sampling, as run_tracking_trial) with its lost detector, driven
 // by one WanderDriver at a time; step() returns whether the detector says lost.
@@ -230,33 +259,16 @@ KidnapResult run_kidnap_trials(const Map& map, std::shared_ptr<const RayCaster> 
     const auto t0 = Clock::now();
     ParticleFilterOptions fo = s.filter;
     fo.seed = s.seed * 7919 + t;
-    ParticleFilter pf(map, world, fo);
-    if (search) pf.set_global_search(search);
-    DriveOptions look;
-    look.step = s.global_step;
-    look.look_around_steps = s.look_around;
-    look.look_around_turn = s.look_around_turn;
-    WanderDriver driver(world, robot.truth_, look, rng());
-    LaserSimulator laser(world, s.laser, rng());
-    Pose truth = robot.truth_;
-    pf.init_global(compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
-    for (int u = 1; u <= s.recover_updates; ++u) {
-      if (u > 1) {
-        const DriveStep st = driver.step();
-        truth = st.truth;
-        pf.predict(st.odometry);
-      }
-      pf.update(laser.scan(truth), compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
-      const PoseEstimate e = pf.estimate();
-      if (!e.converged) continue;
-      const bool within = distance(e.pose, truth) < 0.3 && std::fabs(angle_diff(e.pose.theta, truth.theta)) < deg2rad(3.0);
-      if (within) {
-        ++res.recovered;
-        res.recover_updates.push_back(u);
-      } else {
-        ++res.wrong;
-      }
-      break;
+    GlobalRunSeeds seeds;
+    seeds.drive = rng();
+    seeds.laser = rng();
+    const GlobalRun run =
+        run_global_localization(map, world, search, fo, s, robot.truth_, seeds, rng, s.recover_updates, true);
+    if (run.converged_at > 0 && run.within) {
+      ++res.recovered;
+      res.recover_updates.push_back(run.converged_at);
+    } else if (run.converged_at > 0) {
+      ++res.wrong;
     }
     res.recover_compute_s += seconds_since(t0);
   }
