@@ -7,6 +7,7 @@
 #include <string>
 
 #include "client/sim/drive_simulator.h"
+#include "client/sim/generated_maps.h"
 #include "client/localization/free_space.h"
 #include "client/localization/global_search.h"
 #include "common/io/read_map_file.h"
@@ -57,6 +58,7 @@ struct GlobalRun {
   int converged_at = -1;  // first update whose estimate converged (PoseEstimate::converged); -1: none
   bool within = false;   // the last update's estimate within 0.3 m and 3 degrees
   double error = 0;      // metres, the last update's
+  size_t places = 0;     // of the last update's ambiguity verdict
 };
 
 bool within_bounds(const Pose& e, const Pose& truth) {
@@ -96,6 +98,7 @@ GlobalRun run_global_localization(const Map& map, std::shared_ptr<const RayCaste
     if (e.converged && run.converged_at < 0) run.converged_at = u;
     if (stop_when_converged && e.converged) break;
   }
+  run.places = pf.ambiguity().places.size();
   return run;
 }
 
@@ -111,6 +114,7 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
   if (search) res.setup_seconds = seconds_since(setup);
   const auto t0 = Clock::now();
   for (int t = 0; t < s.trials; ++t) {
+    const auto trial_t0 = Clock::now();
     std::mt19937_64 rng(s.seed * 1000003 + t);
     const Pose start = pick_start_pose(free_space, *world, beams, s.min_hit_fraction, 0.5, rng);
     ParticleFilterOptions fo = s.filter;
@@ -119,18 +123,32 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
     seeds.laser = rng();
     seeds.drive = rng();
     const GlobalRun run = run_global_localization(map, world, search, fo, s, start, seeds, rng, s.updates, false);
-    const int first = run.first_within;
-    const double err = run.error;
+    GlobalTrial g;
+    g.trial = t;
+    g.start = start;
+    g.updates = run.updates;
+    g.within_from = run.first_within;
+    g.places = run.places;
+    g.final_error = run.error;
+    g.seconds = seconds_since(trial_t0);
+    g.outcome = run.places >= 2 ? TrialOutcome::Ambiguous
+                : run.first_within > 0 ? TrialOutcome::Success
+                                       : TrialOutcome::Wrong;
     ++res.trials;
-    if (first > 0) {
+    if (run.first_within > 0) {
       ++res.converged;
-      res.first_within.push_back(first);
+      res.first_within.push_back(run.first_within);
     }
-    res.final_error.push_back(err);
+    res.success += g.outcome == TrialOutcome::Success;
+    res.ambiguous += g.outcome == TrialOutcome::Ambiguous;
+    res.wrong += g.outcome == TrialOutcome::Wrong;
+    res.final_error.push_back(run.error);
+    res.per_trial.push_back(g);
     if (s.per_trial)
-      std::fprintf(s.per_trial, "  trial %d: start (%.2f, %.2f, %.1f deg): %s, final error %.2f m\n", t, start.x,
-                   start.y, rad2deg(start.theta), first > 0 ? ("within from update " + std::to_string(first)).c_str() : "not within",
-                   err);
+      std::fprintf(s.per_trial, "  trial %d: start (%.2f, %.2f, %.1f deg): %s, %s, final error %.2f m, %zu place(s)\n", t,
+                   start.x, start.y, rad2deg(start.theta),
+                   run.first_within > 0 ? ("within from update " + std::to_string(run.first_within)).c_str() : "not within",
+                   to_string(g.outcome), run.error, run.places);
   }
   res.seconds = seconds_since(t0);
   return res;
@@ -324,6 +342,7 @@ std::optional<ParticleFilterOptions> preset(const std::string& name) {
 }
 
 Map load_map_file(const std::string& path) {
+  if (std::optional<Map> generated = generated_map_from_name(path)) return std::move(*generated);
   return read_map_file(path);
 }
 
@@ -339,8 +358,9 @@ void report_map_header(std::FILE* out, const std::string& path, const Map& map, 
                     "iterations; no success rate, tracking error or rate given\n");
 }
 
-void report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& base,
-                   const std::string& name, bool global, bool tracking) {
+std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCaster> world,
+                                          const TrialSettings& base, const std::string& name, bool global,
+                                          bool tracking) {
   TrialSettings s = base;
   s.filter = preset(name).value_or(base.filter);
   s.filter.particles = base.filter.particles;
@@ -351,8 +371,10 @@ void report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
                name.c_str(), describe(f), f.sensor.gamma, f.tempering_ess, f.tempering_stages, f.global_density,
                f.roughening, f.global_search ? ", global search (likelihood field, ray-cast rerank)" : "");
   std::fflush(out);
+  std::optional<GlobalResult> result;
   if (global) {
     const GlobalResult g = run_global_trials(map, world, s);
+    result = g;
     std::vector<double> errs = g.final_error;
     std::sort(errs.begin(), errs.end());
     char setup[64] = "";
@@ -367,6 +389,8 @@ void report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
                  percentile(g.first_within, 0.5), percentile(g.first_within, 0.9),
                  errs.empty() ? NAN : errs[errs.size() / 2], g.seconds / std::max(1, g.trials), s.updates,
                  setup);
+    std::fprintf(out, "  outcome: success %d, ambiguous %d (the filter says it cannot tell), wrong %d of %d\n", g.success,
+                 g.ambiguous, g.wrong, g.trials);
     std::fflush(out);
   }
   if (tracking) {
@@ -383,6 +407,51 @@ void report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
       std::fflush(out);
     }
   }
+  return result;
+}
+
+const char* to_string(TrialOutcome o) {
+  switch (o) {
+    case TrialOutcome::Success: return "success";
+    case TrialOutcome::Ambiguous: return "ambiguous";
+    case TrialOutcome::Wrong: return "wrong";
+  }
+  return "?";
+}
+
+namespace {
+
+double percentile_of(std::vector<double> v, double q) {
+  if (v.empty()) return NAN;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, static_cast<size_t>(q * v.size()))];
+}
+
+}  // namespace
+
+void print_table(std::FILE* out, const std::vector<TableRow>& rows) {
+  std::fprintf(out, "\n| map | config | trials | success | ambiguous | wrong | within, no verdict | time p50 | time p95 |\n"
+                    "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  for (const TableRow& r : rows) {
+    const GlobalResult& g = r.result;
+    std::vector<double> seconds;
+    for (const GlobalTrial& t : g.per_trial) seconds.push_back(t.seconds);
+    const double n = std::max(1, g.trials);
+    std::fprintf(out, "| %s | %s | %d | %.1f %% | %.1f %% | %.1f %% | %.1f %% | %.2f s | %.2f s |\n", r.map.c_str(),
+                 r.config.c_str(), g.trials, 100.0 * g.success / n, 100.0 * g.ambiguous / n, 100.0 * g.wrong / n,
+                 100.0 * g.converged / n, percentile_of(seconds, 0.5), percentile_of(seconds, 0.95));
+  }
+  std::fflush(out);
+}
+
+void write_trials_csv(std::FILE* out, const std::vector<TableRow>& rows, uint64_t seed) {
+  std::fprintf(out, "map,config,seed,trial,start_x,start_y,start_theta_deg,outcome,updates,within_from,places,"
+                    "final_error_m,seconds\n");
+  for (const TableRow& r : rows)
+    for (const GlobalTrial& t : r.result.per_trial)
+      std::fprintf(out, "%s,%s,%llu,%d,%.3f,%.3f,%.2f,%s,%d,%d,%zu,%.3f,%.3f\n", r.map.c_str(), r.config.c_str(),
+                   static_cast<unsigned long long>(seed), t.trial, t.start.x, t.start.y, rad2deg(t.start.theta),
+                   to_string(t.outcome), t.updates, t.within_from, t.places, t.final_error, t.seconds);
 }
 
 }  // namespace fleetmap::localization
