@@ -15,7 +15,9 @@
 //     with the seed's bounding-circle caster (the seed's method), the baseline.
 // Targets: >= 95 % converged, RMS < 0.10 m; the update rate is reported.
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <cstdio>
 #include <memory>
 #include <random>
@@ -66,13 +68,21 @@ double update_seconds(const Map& map, std::shared_ptr<const RayCaster> caster, s
   return times[times.size() / 2];
 }
 
+// A table row's map name: the file's name without its directory, or "gen:KIND".
+std::string map_label(const std::string& path) {
+  if (path.rfind("gen:", 0) == 0) return path;
+  const size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
 void bench_map(const std::string& path, const TrialSettings& base, const std::vector<std::string>& configs,
-               bool skip_global, bool skip_tracking, bool skip_rate) {
+               bool skip_global, bool skip_tracking, bool skip_rate, std::vector<TableRow>& rows) {
   const Map map = load_map_file(path);
   std::shared_ptr<const RayCaster> world = std::make_shared<GridRayCaster>(map, base.filter.laser);
   report_map_header(stdout, path, map, base);
   for (const std::string& c : configs) {
-    report_preset(stdout, map, world, base, c, !skip_global, !skip_tracking);
+    if (auto g = report_preset(stdout, map, world, base, c, !skip_global, !skip_tracking))
+      rows.push_back({map_label(path), c, std::move(*g)});
     if (base.kidnaps > 0 || base.false_alarm_drive > 0) {
       TrialSettings k = base;
       k.filter = preset(c).value_or(base.filter);
@@ -103,7 +113,9 @@ int main(int argc, char** argv) {
   TrialSettings s;
   std::string config = "all";
   bool skip_global = false, skip_tracking = false, skip_rate = false;
-  app.add_option("--map", maps, "maps (AMRL .vectormap.txt or seed .map); default GDC1 and UT_Campus in " + maps_dir());
+  app.add_option("--map", maps,
+                 "maps (AMRL .vectormap.txt, seed .map, or generated: gen:offices, gen:corridor, gen:hall, "
+                 "gen:clutter, with an optional :SEED); default GDC1 and UT_Campus in " + maps_dir());
   app.add_option("--trials", s.trials, "global localization trials per map")->capture_default_str();
   app.add_option("--seed", s.seed, "seed of every random draw")->capture_default_str();
   app.add_option("--particles", s.filter.particles, "NP")->capture_default_str();
@@ -127,6 +139,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   bool per_trial = false;
   app.add_flag("--per-trial", per_trial, "a line per global trial: start pose, outcome, final error");
+  std::string csv;
+  app.add_option("--csv", csv,
+                 "write a row per global trial to this file (map, config, seed, trial, start, outcome, updates, "
+                 "final error, seconds)");
   app.add_flag("--skip-global", skip_global);
   app.add_flag("--skip-tracking", skip_tracking);
   app.add_flag("--skip-rate", skip_rate);
@@ -148,6 +164,26 @@ int main(int argc, char** argv) {
   s.false_alarm_drive = false_alarm_hours * 3600 / s.scan_period_s * DriveOptions{}.step;
   if (per_trial) s.per_trial = stdout;
   if (maps.empty()) maps = {real_map_path("GDC1.vectormap.txt"), real_map_path("UT_Campus.vectormap.txt")};
-  for (const std::string& m : maps) bench_map(m, s, configs, skip_global, skip_tracking, skip_rate);
+  std::FILE* csv_file = nullptr;
+  if (!csv.empty() && !(csv_file = std::fopen(csv.c_str(), "w"))) {
+    std::fprintf(stderr, "--csv: cannot write %s: %s\n", csv.c_str(), std::strerror(errno));
+    return 2;
+  }
+  std::vector<TableRow> rows;
+  try {
+    for (const std::string& m : maps) bench_map(m, s, configs, skip_global, skip_tracking, skip_rate, rows);
+  } catch (const std::exception& e) {  // a bad map file or name
+    std::fprintf(stderr, "bench-localization: %s\n", e.what());
+    if (csv_file) std::fclose(csv_file);
+    return 2;
+  }
+  if (!rows.empty()) print_table(stdout, rows);
+  if (csv_file) {
+    write_trials_csv(csv_file, rows, s.seed);
+    if (std::fclose(csv_file) != 0) {
+      std::fprintf(stderr, "--csv: writing %s failed\n", csv.c_str());
+      return 1;
+    }
+  }
   return 0;
 }

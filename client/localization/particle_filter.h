@@ -53,6 +53,7 @@
 #include <random>
 #include <vector>
 
+#include "client/localization/ambiguity.h"
 #include "client/localization/compass_prior.h"
 #include "client/localization/free_space.h"
 #include "client/localization/global_search.h"
@@ -111,6 +112,7 @@ struct ParticleFilterOptions {
   double cluster_cell = 1.0;              // metres, for PoseEstimate::pose
   double converged_xy = 0.5;              // metres of spread under which
   double converged_theta = deg2rad(5.0);  // and radians: PoseEstimate::converged
+  AmbiguityOptions ambiguity;             // ParticleFilter::ambiguity
   int threads = 2;
   uint64_t seed = 1;
 
@@ -177,6 +179,9 @@ class ParticleFilter {
   void update(const std::vector<double>& ranges, std::optional<double> compass = std::nullopt);
 
   PoseEstimate estimate() const;
+  // Whether the cloud holds two or more places of comparable weight (ambiguity.h): then
+  // estimate().pose is one of look-alike places, not a pose to report.
+  Ambiguity ambiguity() const { return find_ambiguity(poses_, weights_, options_.ambiguity); }
 
   const std::vector<Pose>& poses() const { return poses_; }
   const std::vector<double>& weights() const { return weights_; }  // normalized

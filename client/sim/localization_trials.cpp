@@ -8,6 +8,7 @@
 #include <string>
 
 #include "client/sim/drive_simulator.h"
+#include "client/sim/generated_maps.h"
 #include "client/localization/free_space.h"
 #include "client/localization/global_search.h"
 #include "common/io/read_map_file.h"
@@ -35,6 +36,73 @@ const char* describe(const ParticleFilterOptions& f) {
   return f.sensor.combination == BeamCombination::Harmonic ? "eq. (6) harmonic" : "beam product";
 }
 
+std::shared_ptr<const GlobalSearch> make_search(const Map& map, const ParticleFilterOptions& f) {
+  if (!f.global_search) return nullptr;
+  GlobalSearchOptions so = f.search;
+  so.field.margin = f.laser.rmax;
+  so.field.laser_height = f.laser.laser_height;
+  so.threads = f.threads;
+  return std::make_shared<GlobalSearch>(map, so);
+}
+
+// One global localization as at boot (SimRobot::localize): a filter initialised from the
+// compass alone, a look around then a wander from `start`, up to max_updates updates.
+// The caller draws the laser's and the driver's seeds (each caller in its own order, so
+// that its figures stay those of its seeds).
+struct GlobalRunSeeds {
+  uint64_t laser = 0, drive = 0;
+};
+
+struct GlobalRun {
+  int updates = 0;       // updates made
+  int first_within = -1;  // update from which the estimate stayed within bounds; -1: not within at the end
+  int converged_at = -1;  // first update whose estimate converged (PoseEstimate::converged); -1: none
+  bool within = false;   // the last update's estimate within 0.3 m and 3 degrees
+  double error = 0;      // metres, the last update's
+  size_t places = 0;     // of the last update's ambiguity verdict
+};
+
+bool within_bounds(const Pose& e, const Pose& truth) {
+  return distance(e, truth) < 0.3 && std::fabs(angle_diff(e.theta, truth.theta)) < deg2rad(3.0);
+}
+
+// stop_when_converged: end at the first converged estimate (a recovery trusts it then);
+// otherwise run all max_updates (a trial asks that the estimate stays within).
+GlobalRun run_global_localization(const Map& map, std::shared_ptr<const RayCaster> world,
+                                  std::shared_ptr<const GlobalSearch> search, const ParticleFilterOptions& fo,
+                                  const TrialSettings& s, const Pose& start, GlobalRunSeeds seeds,
+                                  std::mt19937_64& rng, int max_updates, bool stop_when_converged) {
+  ParticleFilter pf(map, world, fo);
+  if (search) pf.set_global_search(std::move(search));
+  LaserSimulator laser(world, s.laser, seeds.laser);
+  DriveOptions drive;
+  drive.step = s.global_step;
+  drive.look_around_steps = s.look_around;
+  drive.look_around_turn = s.look_around_turn;
+  WanderDriver driver(world, start, drive, seeds.drive);
+  Pose truth = start;
+  pf.init_global(compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
+  GlobalRun run;
+  for (int u = 1; u <= max_updates; ++u) {
+    if (u > 1) {
+      const DriveStep st = driver.step();
+      truth = st.truth;
+      pf.predict(st.odometry);
+    }
+    pf.update(laser.scan(truth), compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
+    const PoseEstimate e = pf.estimate();
+    run.updates = u;
+    run.error = distance(e.pose, truth);
+    run.within = within_bounds(e.pose, truth);
+    if (run.within && run.first_within < 0) run.first_within = u;
+    if (!run.within) run.first_within = -1;  // must stay within to the end
+    if (e.converged && run.converged_at < 0) run.converged_at = u;
+    if (stop_when_converged && e.converged) break;
+  }
+  run.places = pf.ambiguity().places.size();
+  return run;
+}
+
 }  // namespace
 
 GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s) {
@@ -42,16 +110,9 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
   const FreeSpace free_space(map);
   const std::vector<double> beams = evenly_spread_angles(s.laser.beams, s.laser.fov);
   // One search (its likelihood field) for every trial on this map, as one robot keeps it.
-  std::shared_ptr<const GlobalSearch> search;
-  if (s.filter.global_search) {
-    const auto t0 = Clock::now();
-    GlobalSearchOptions so = s.filter.search;
-    so.field.margin = s.filter.laser.rmax;
-    so.field.laser_height = s.filter.laser.laser_height;
-    so.threads = s.filter.threads;
-    search = std::make_shared<GlobalSearch>(map, so);
-    res.setup_seconds = seconds_since(t0);
-  }
+  const auto setup = Clock::now();
+  const std::shared_ptr<const GlobalSearch> search = make_search(map, s.filter);
+  if (search) res.setup_seconds = seconds_since(setup);
   const auto t0 = Clock::now();
   for (int t = 0; t < s.trials; ++t) {
     const auto trial_t0 = Clock::now();
@@ -59,43 +120,37 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
     const Pose start = pick_start_pose(free_space, *world, beams, s.min_hit_fraction, 0.5, rng);
     ParticleFilterOptions fo = s.filter;
     fo.seed = s.seed * 7919 + t;
-    ParticleFilter pf(map, world, fo);
-    if (search) pf.set_global_search(search);
-    LaserSimulator laser(world, s.laser, rng());
-    DriveOptions drive;
-    drive.step = s.global_step;
-    drive.look_around_steps = s.look_around;
-    drive.look_around_turn = s.look_around_turn;
-    WanderDriver driver(world, start, drive, rng());
-    Pose truth = start;
-    pf.init_global(compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
-    int first = -1;
-    double err = 0;
-    for (int u = 1; u <= s.updates; ++u) {
-      if (u > 1) {
-        const DriveStep st = driver.step();
-        truth = st.truth;
-        pf.predict(st.odometry);
-      }
-      pf.update(laser.scan(truth), compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
-      const PoseEstimate e = pf.estimate();
-      err = distance(e.pose, truth);
-      const double err_theta = std::fabs(angle_diff(e.pose.theta, truth.theta));
-      const bool within = err < 0.3 && err_theta < deg2rad(3.0);
-      if (within && first < 0) first = u;
-      if (!within) first = -1;  // must stay within to the end
-    }
-    res.trial_seconds.push_back(seconds_since(trial_t0));
+    GlobalRunSeeds seeds;
+    seeds.laser = rng();
+    seeds.drive = rng();
+    const GlobalRun run = run_global_localization(map, world, search, fo, s, start, seeds, rng, s.updates, false);
+    GlobalTrial g;
+    g.trial = t;
+    g.start = start;
+    g.updates = run.updates;
+    g.within_from = run.first_within;
+    g.places = run.places;
+    g.final_error = run.error;
+    g.seconds = seconds_since(trial_t0);
+    res.trial_seconds.push_back(g.seconds);
+    g.outcome = run.places >= 2 ? TrialOutcome::Ambiguous
+                : run.first_within > 0 ? TrialOutcome::Success
+                                       : TrialOutcome::Wrong;
     ++res.trials;
-    if (first > 0) {
+    if (run.first_within > 0) {
       ++res.converged;
-      res.first_within.push_back(first);
+      res.first_within.push_back(run.first_within);
     }
-    res.final_error.push_back(err);
+    res.success += g.outcome == TrialOutcome::Success;
+    res.ambiguous += g.outcome == TrialOutcome::Ambiguous;
+    res.wrong += g.outcome == TrialOutcome::Wrong;
+    res.final_error.push_back(run.error);
+    res.per_trial.push_back(g);
     if (s.per_trial)
-      std::fprintf(s.per_trial, "  trial %d: start (%.2f, %.2f, %.1f deg): %s, final error %.2f m\n", t, start.x,
-                   start.y, rad2deg(start.theta), first > 0 ? ("within from update " + std::to_string(first)).c_str() : "not within",
-                   err);
+      std::fprintf(s.per_trial, "  trial %d: start (%.2f, %.2f, %.1f deg): %s, %s, final error %.2f m, %zu place(s)\n", t,
+                   start.x, start.y, rad2deg(start.theta),
+                   run.first_within > 0 ? ("within from update " + std::to_string(run.first_within)).c_str() : "not within",
+                   to_string(g.outcome), run.error, run.places);
   }
   res.seconds = seconds_since(t0);
   return res;
@@ -143,15 +198,6 @@ TrackResult run_tracking_trial(const Map& map, std::shared_ptr<const RayCaster> 
 }
 
 namespace {
-
-std::shared_ptr<const GlobalSearch> make_search(const Map& map, const ParticleFilterOptions& f) {
-  if (!f.global_search) return nullptr;
-  GlobalSearchOptions so = f.search;
-  so.field.margin = f.laser.rmax;
-  so.field.laser_height = f.laser.laser_height;
-  so.threads = f.threads;
-  return std::make_shared<GlobalSearch>(map, so);
-}
 
 // A tracking filter (KLD sampling, as run_tracking_trial) with its lost detector, driven
 // by one WanderDriver at a time; step() returns whether the detector says lost.
@@ -233,33 +279,16 @@ KidnapResult run_kidnap_trials(const Map& map, std::shared_ptr<const RayCaster> 
     const auto t0 = Clock::now();
     ParticleFilterOptions fo = s.filter;
     fo.seed = s.seed * 7919 + t;
-    ParticleFilter pf(map, world, fo);
-    if (search) pf.set_global_search(search);
-    DriveOptions look;
-    look.step = s.global_step;
-    look.look_around_steps = s.look_around;
-    look.look_around_turn = s.look_around_turn;
-    WanderDriver driver(world, robot.truth_, look, rng());
-    LaserSimulator laser(world, s.laser, rng());
-    Pose truth = robot.truth_;
-    pf.init_global(compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
-    for (int u = 1; u <= s.recover_updates; ++u) {
-      if (u > 1) {
-        const DriveStep st = driver.step();
-        truth = st.truth;
-        pf.predict(st.odometry);
-      }
-      pf.update(laser.scan(truth), compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
-      const PoseEstimate e = pf.estimate();
-      if (!e.converged) continue;
-      const bool within = distance(e.pose, truth) < 0.3 && std::fabs(angle_diff(e.pose.theta, truth.theta)) < deg2rad(3.0);
-      if (within) {
-        ++res.recovered;
-        res.recover_updates.push_back(u);
-      } else {
-        ++res.wrong;
-      }
-      break;
+    GlobalRunSeeds seeds;
+    seeds.drive = rng();
+    seeds.laser = rng();
+    const GlobalRun run =
+        run_global_localization(map, world, search, fo, s, robot.truth_, seeds, rng, s.recover_updates, true);
+    if (run.converged_at > 0 && run.within) {
+      ++res.recovered;
+      res.recover_updates.push_back(run.converged_at);
+    } else if (run.converged_at > 0) {
+      ++res.wrong;
     }
     res.recover_compute_s += seconds_since(t0);
   }
@@ -316,6 +345,7 @@ std::optional<ParticleFilterOptions> preset(const std::string& name) {
 }
 
 Map load_map_file(const std::string& path) {
+  if (std::optional<Map> generated = generated_map_from_name(path)) return std::move(*generated);
   return read_map_file(path);
 }
 
@@ -331,8 +361,9 @@ void report_map_header(std::FILE* out, const std::string& path, const Map& map, 
                     "iterations; no success rate, tracking error or rate given\n");
 }
 
-void report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& base,
-                   const std::string& name, bool global, bool tracking) {
+std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCaster> world,
+                                          const TrialSettings& base, const std::string& name, bool global,
+                                          bool tracking) {
   TrialSettings s = base;
   s.filter = preset(name).value_or(base.filter);
   s.filter.particles = base.filter.particles;
@@ -343,8 +374,10 @@ void report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
                name.c_str(), describe(f), f.sensor.gamma, f.tempering_ess, f.tempering_stages, f.global_density,
                f.roughening, f.global_search ? ", global search (likelihood field, ray-cast rerank)" : "");
   std::fflush(out);
+  std::optional<GlobalResult> result;
   if (global) {
     const GlobalResult g = run_global_trials(map, world, s);
+    result = g;
     std::vector<double> errs = g.final_error;
     std::sort(errs.begin(), errs.end());
     std::vector<double> times = g.trial_seconds;
@@ -366,6 +399,8 @@ void report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
                  percentile(g.first_within, 0.5), percentile(g.first_within, 0.9),
                  errs.empty() ? NAN : errs[errs.size() / 2], g.seconds / std::max(1, g.trials), s.updates,
                  setup);
+    std::fprintf(out, "  outcome: success %d, ambiguous %d (the filter says it cannot tell), wrong %d of %d\n", g.success,
+                 g.ambiguous, g.wrong, g.trials);
     std::fflush(out);
   }
   if (tracking) {
@@ -382,6 +417,51 @@ void report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
       std::fflush(out);
     }
   }
+  return result;
+}
+
+const char* to_string(TrialOutcome o) {
+  switch (o) {
+    case TrialOutcome::Success: return "success";
+    case TrialOutcome::Ambiguous: return "ambiguous";
+    case TrialOutcome::Wrong: return "wrong";
+  }
+  return "?";
+}
+
+namespace {
+
+double percentile_of(std::vector<double> v, double q) {
+  if (v.empty()) return NAN;
+  std::sort(v.begin(), v.end());
+  return v[std::min(v.size() - 1, static_cast<size_t>(q * v.size()))];
+}
+
+}  // namespace
+
+void print_table(std::FILE* out, const std::vector<TableRow>& rows) {
+  std::fprintf(out, "\n| map | config | trials | success | ambiguous | wrong | within, no verdict | time p50 | time p95 |\n"
+                    "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  for (const TableRow& r : rows) {
+    const GlobalResult& g = r.result;
+    std::vector<double> seconds;
+    for (const GlobalTrial& t : g.per_trial) seconds.push_back(t.seconds);
+    const double n = std::max(1, g.trials);
+    std::fprintf(out, "| %s | %s | %d | %.1f %% | %.1f %% | %.1f %% | %.1f %% | %.2f s | %.2f s |\n", r.map.c_str(),
+                 r.config.c_str(), g.trials, 100.0 * g.success / n, 100.0 * g.ambiguous / n, 100.0 * g.wrong / n,
+                 100.0 * g.converged / n, percentile_of(seconds, 0.5), percentile_of(seconds, 0.95));
+  }
+  std::fflush(out);
+}
+
+void write_trials_csv(std::FILE* out, const std::vector<TableRow>& rows, uint64_t seed) {
+  std::fprintf(out, "map,config,seed,trial,start_x,start_y,start_theta_deg,outcome,updates,within_from,places,"
+                    "final_error_m,seconds\n");
+  for (const TableRow& r : rows)
+    for (const GlobalTrial& t : r.result.per_trial)
+      std::fprintf(out, "%s,%s,%llu,%d,%.3f,%.3f,%.2f,%s,%d,%d,%zu,%.3f,%.3f\n", r.map.c_str(), r.config.c_str(),
+                   static_cast<unsigned long long>(seed), t.trial, t.start.x, t.start.y, rad2deg(t.start.theta),
+                   to_string(t.outcome), t.updates, t.within_from, t.places, t.final_error, t.seconds);
 }
 
 }  // namespace fleetmap::localization

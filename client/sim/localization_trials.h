@@ -55,8 +55,29 @@ struct TrialSettings {
   LostDetectorOptions lost;
 };
 
+// A global trial's outcome: within bounds and staying so to the last update, with one
+// place in the cloud (success); two places or more of comparable weight at the last
+// update (ambiguous, ambiguity.h: the filter says it cannot tell, whatever its heaviest
+// cluster); otherwise wrong (a pose off by more than the bounds, reported as if right).
+enum class TrialOutcome { Success, Ambiguous, Wrong };
+const char* to_string(TrialOutcome o);
+
+struct GlobalTrial {
+  int trial = 0;
+  Pose start;
+  TrialOutcome outcome = TrialOutcome::Wrong;
+  int updates = 0;         // updates made
+  int within_from = -1;    // update from which the estimate stayed within bounds; -1: not within at the end
+  size_t places = 0;       // places of the ambiguity verdict at the last update
+  double final_error = 0;  // metres
+  double seconds = 0;      // computation of this localization
+};
+
 struct GlobalResult {
-  int trials = 0, converged = 0;
+  // converged: within bounds at the end, whether or not ambiguous (the figure before the
+  // ambiguity verdict); success + ambiguous + wrong = trials.
+  int trials = 0, converged = 0, success = 0, ambiguous = 0, wrong = 0;
+  std::vector<GlobalTrial> per_trial;
   std::vector<int> first_within;    // update at which the estimate first got within bounds
   std::vector<double> final_error;  // metres, per trial
   double seconds = 0;               // all trials, without setup
@@ -94,13 +115,25 @@ void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
 std::optional<ParticleFilterOptions> preset(const std::string& name);
 const std::vector<std::string>& preset_names();
 
-// An AMRL map (*.vectormap.txt) or a seed-format one.
+// An AMRL map (*.vectormap.txt), a generated one ("gen:KIND[:SEED]", generated_maps.h)
+// or a seed-format one.
 Map load_map_file(const std::string& path);
 
 // The report: a header per map, then per preset its global and tracking lines (the
 // settings' filter replaced by the preset, keeping NP and threads).
 void report_map_header(std::FILE* out, const std::string& path, const Map& map, const TrialSettings& s);
-void report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s,
-                   const std::string& name, bool global, bool tracking);
+// Returns the global trials' result when they ran.
+std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCaster> world,
+                                          const TrialSettings& s, const std::string& name, bool global, bool tracking);
+
+// The per-map table: a row per map and config (trials, success, ambiguous, wrong, the
+// figure before the verdict, time p50/p95 per localization), Markdown.
+struct TableRow {
+  std::string map, config;
+  GlobalResult result;
+};
+void print_table(std::FILE* out, const std::vector<TableRow>& rows);
+// The per-trial CSV: a header, then a row per trial of every row.
+void write_trials_csv(std::FILE* out, const std::vector<TableRow>& rows, uint64_t seed);
 
 }  // namespace fleetmap::localization

@@ -115,7 +115,8 @@ int main(int argc, char** argv) {
   app.add_option("--trials", trials,
                  "run N global localization trials per map (and a 200 m tracking run) on simulated sensors, print "
                  "the report of bench-localization and exit; no database");
-  app.add_option("--map-file", map_files, "maps for --trials (AMRL .vectormap.txt or seed .map); default "
+  app.add_option("--map-file", map_files, "maps for --trials (AMRL .vectormap.txt, seed .map, or gen:offices, "
+                                          "gen:corridor, gen:hall, gen:clutter); default "
                                           "GDC1 and UT_Campus in " + fleetmap::maps_dir() +
                                           " ($FLEETMAP_MAPS_DIR)");
   app.add_option("--presets", presets, "filter presets for --trials, comma-separated: seed (the baseline), robust, "

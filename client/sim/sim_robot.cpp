@@ -46,6 +46,7 @@ std::optional<int> SimRobot::localize(int max_updates) {
     tracking_ = false;
   }
   filter_->init_global(compass());
+  bool was_ambiguous = false;
   for (int i = 1; i <= max_updates; ++i) {
     // Look around: turn 60 degrees in place (at 0.5 rad/s) between scans, so that six
     // turns show the filter the whole circle (ParticleFilterOptions::look_around_searches).
@@ -54,6 +55,19 @@ std::optional<int> SimRobot::localize(int max_updates) {
     filter_->predict(odo);
     filter_->update(laser_.scan(drive_.pose()), compass());
     const loc::PoseEstimate e = filter_->estimate();
+    // Look-alike places (identical rooms, a row of identical doors): say so and keep
+    // localizing rather than report one of them as the pose.
+    const loc::Ambiguity a = filter_->ambiguity();
+    if (a.ambiguous()) {
+      if (!was_ambiguous)
+        spdlog::warn("localizing: ambiguous, {} places look alike, the heaviest ({:.2f}, {:.2f}) with {:.0f} % of the "
+                     "weight, the next ({:.2f}, {:.2f}) with {:.0f} %; not reporting a pose",
+                     a.places.size(), a.places[0].x, a.places[0].y, 100 * a.weights[0], a.places[1].x, a.places[1].y,
+                     100 * a.weights[1]);
+      was_ambiguous = true;
+      continue;
+    }
+    was_ambiguous = false;
     if (e.converged) {
       spdlog::info("localized after {} updates at ({:.2f}, {:.2f}, {:.1f} deg); truth ({:.2f}, {:.2f}, {:.1f} deg)", i,
                    e.pose.x, e.pose.y, loc::rad2deg(e.pose.theta), drive_.pose().x, drive_.pose().y,
@@ -62,7 +76,8 @@ std::optional<int> SimRobot::localize(int max_updates) {
       return i;
     }
   }
-  spdlog::warn("global localization did not converge in {} updates", max_updates);
+  spdlog::warn("global localization did not converge in {} updates{}", max_updates,
+               was_ambiguous ? " (ambiguous: places look alike)" : "");
   return std::nullopt;
 }
 

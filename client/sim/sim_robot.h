@@ -47,7 +47,8 @@ class SimRobot {
   SimRobot(RobotClient& client, const Map& world, Pose start, const Map& first_map, SimRobotOptions options);
 
   // Global localization from a compass-only prior; returns the updates it took, or
-  // nullopt when it did not converge within max_updates.
+  // nullopt when it did not converge within max_updates, or its cloud still held look-alike
+  // places (ParticleFilter::ambiguity: it logs them rather than report one as the pose).
   std::optional<int> localize(int max_updates = 40);
   // Tracking from a known pose (the operator's initial pose, GetPosIni).
   void start_tracking(const Pose& pose, double sd_xy, double sd_theta);
