@@ -36,8 +36,9 @@ long long reported_cm_from(const std::string& robot, double x, double y) {
 }
 
 TEST(RobotGlobal, BootsWithoutAPoseLocalizesAndDrivesToAGoal) {
-  if (scalar("SELECT COUNT(*) FROM maps WHERE name = 'glob_gdc1'") == 0)
+  if (scalar("SELECT COUNT(*) FROM maps WHERE name = 'glob_gdc1'") == 0) {
     ASSERT_EQ(run("fleetmap", "map import " + real_map("GDC1.vectormap.txt") + " --name glob_gdc1").exit_code, 0);
+  }
   const std::string name = "glob_r1";
   write_file(temp_path(name + ".pw"), add_robot(name, "glob_gdc1") + "\n");
   // An operator's initial pose 14 m off: --global must not use it (a robot tracking from
