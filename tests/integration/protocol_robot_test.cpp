@@ -217,11 +217,12 @@ TEST_F(ReferenceRobot, AWriteTheDatabaseRefusesCostsOnlyItsOwnRequest) {
 TEST_F(ReferenceRobot, AnImageFormatIsAsLongAsItsColumnHolds) {
   ready();
   const std::string f32(32, 'f');
+  const std::string stored =
+      "SELECT COUNT(*) FROM images WHERE format = '" + f32 + "' AND robot_id = " + std::to_string(robot_id_);
+  const long long before = scalar(stored);
   const auto ok = ask("SendImage", R"({"x": 1, "y": 2, "format": ")" + f32 + R"("})", 1, std::string("IMG"));
   EXPECT_EQ(ok[0].op, "OpAck") << ok[0].params.dump();
-  EXPECT_EQ(scalar("SELECT COUNT(*) FROM images WHERE format = '" + f32 + "' AND robot_id = " +
-                   std::to_string(robot_id_)),
-            1);
+  EXPECT_EQ(scalar(stored), before + 1);
   expect_error("SendImage", R"({"x": 1, "y": 2, "format": ")" + std::string(33, 'f') + R"("})", "bad_params");
 }
 
