@@ -15,8 +15,8 @@ std::vector<std::string> RequestQueue::waiting_accounts(size_t limit, unsigned m
   if (modulus > 1)
     // rr's primary key in order, each row's robot by uq_robots_db_user: the head of this
     // share's queue, however long the other shares' queues are.
-    q << "SELECT rr.db_user FROM rr STRAIGHT_JOIN robots b ON b.db_user = rr.db_user WHERE b.id % " << modulus
-      << " = " << remainder << " ORDER BY rr.id LIMIT " << limit * 16;
+    q << "SELECT rr.db_user FROM rr STRAIGHT_JOIN robots b ON b.db_user = rr.db_user WHERE TRUE"
+      << sql::share_condition("b.id", modulus, remainder) << " ORDER BY rr.id LIMIT " << limit * 16;
   else
     q << "SELECT db_user FROM rr ORDER BY id LIMIT " << limit * 16;
   std::vector<std::string> out;

@@ -1,7 +1,5 @@
 #include "protocol/robot_store.h"
 
-#include <algorithm>
-
 #include "common/geometry/number_format.h"
 #include "protocol/sql_util.h"
 #include "protocol/task_lifecycle.h"
@@ -190,7 +188,7 @@ std::vector<unsigned> RobotStore::robots_with_pushes(size_t limit, unsigned modu
        " WHERE r.magic IS NOT NULL AND r.removed_at IS NULL AND r.state <> "
     << sql::quoted(RobotState::Lost) << " AND t.state IN " << sql::open_task_states()
     << " AND ((t.answer_id IS NULL) OR (t.abort_requested_at IS NOT NULL AND t.abort_answer_id IS NULL))"
-    << " AND r.id % " << std::max(modulus, 1u) << " = " << remainder << " LIMIT " << limit;
+    << sql::share_condition("r.id", modulus, remainder) << " LIMIT " << limit;
   std::vector<unsigned> out;
   for (const mysqlpp::Row& r : q.store()) out.push_back(static_cast<unsigned>(sql::to_uint(r[0])));
   return out;
@@ -201,8 +199,8 @@ std::vector<unsigned> RobotStore::silent_robots(double seconds, size_t limit, un
   q << "SELECT r.id FROM robots r WHERE r.magic IS NOT NULL AND r.removed_at IS NULL AND r.state <> "
     << sql::quoted(RobotState::Lost) << " AND r.last_seen < SYSDATE(6) - INTERVAL "
     << static_cast<long long>(seconds * 1e6) << " MICROSECOND"
-    << " AND NOT EXISTS (SELECT 1 FROM rr WHERE rr.db_user = r.db_user) AND r.id % " << std::max(modulus, 1u)
-    << " = " << remainder << " LIMIT " << limit;
+    << " AND NOT EXISTS (SELECT 1 FROM rr WHERE rr.db_user = r.db_user)"
+    << sql::share_condition("r.id", modulus, remainder) << " LIMIT " << limit;
   std::vector<unsigned> out;
   for (const mysqlpp::Row& r : q.store()) out.push_back(static_cast<unsigned>(sql::to_uint(r[0])));
   return out;

@@ -60,4 +60,12 @@ inline const std::string& open_task_states() {
   return list;
 }
 
+// A server's share of the robots (server/core/robot_partition.h): " AND <robot_id> % N = I",
+// nothing when one server takes them all (N <= 1), so the single-server queries stay as
+// they were.
+inline std::string share_condition(const char* robot_id, unsigned modulus, unsigned remainder) {
+  if (modulus <= 1) return "";
+  return std::string(" AND ") + robot_id + " % " + std::to_string(modulus) + " = " + std::to_string(remainder);
+}
+
 }  // namespace fleetmap::sql
