@@ -20,6 +20,7 @@
 
 #include "app/exit_codes.h"
 #include "app/maps_dir.h"
+#include "app/run_program.h"
 #include "common/io/amrl_import.h"
 #include "common/io/seed_format.h"
 #include "common/io/topo_json.h"
@@ -152,22 +153,5 @@ int main(int argc, char** argv) {
   app.add_flag("--per-trip", s.per_trip, "print every trip");
   app.footer("Real maps are read from $FLEETMAP_MAPS_DIR (default " + maps_dir() + ").\n"
              "Exit codes: 0 ok, 1 I/O, 2 malformed map or graph, or no trip that long, 64 usage.");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int rc = app.exit(e);
-    return rc == 0 ? exit_code::kOk : exit_code::kUsage;
-  }
-  try {
-    return run(s);
-  } catch (const MapFormatError& e) {
-    std::cerr << "bench-topo: " << e.what() << "\n";
-    return exit_code::kBadInput;
-  } catch (const TopoFormatError& e) {
-    std::cerr << "bench-topo: " << e.what() << "\n";
-    return exit_code::kBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "bench-topo: " << e.what() << "\n";
-    return exit_code::kFailure;
-  }
+  return run_program("bench-topo", app, argc, argv, [&] { return run(s); });
 }

@@ -22,6 +22,7 @@
 
 #include "app/exit_codes.h"
 #include "app/maps_dir.h"
+#include "app/run_program.h"
 #include "common/io/amrl_import.h"
 #include "common/io/seed_format.h"
 #include "common/io/topo_json.h"
@@ -127,22 +128,5 @@ int main(int argc, char** argv) {
   app.add_flag("--stairs", s.stairs, "the robot climbs stairs (default: wheeled)");
   app.footer("Real maps are read from $FLEETMAP_MAPS_DIR (default " + maps_dir() + ").\n"
              "Exit codes: 0 ok, 1 I/O, 2 malformed map or graph, 64 usage.");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int rc = app.exit(e);
-    return rc == 0 ? exit_code::kOk : exit_code::kUsage;
-  }
-  try {
-    return run(s);
-  } catch (const MapFormatError& e) {
-    std::cerr << "bench-topo-path: " << e.what() << "\n";
-    return exit_code::kBadInput;
-  } catch (const TopoFormatError& e) {
-    std::cerr << "bench-topo-path: " << e.what() << "\n";
-    return exit_code::kBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "bench-topo-path: " << e.what() << "\n";
-    return exit_code::kFailure;
-  }
+  return run_program("bench-topo-path", app, argc, argv, [&] { return run(s); });
 }

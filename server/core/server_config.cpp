@@ -1,23 +1,14 @@
 #include "server/core/server_config.h"
 
-#include <cmath>
 #include <stdexcept>
+
+#include "app/config_number.h"
 
 namespace fleetmap {
 namespace {
 
 double number(const std::string& key, const std::string& v, bool zero_ok) {
-  size_t used = 0;
-  double d = 0;
-  try {
-    d = std::stod(v, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != v.size() || !std::isfinite(d) || d < 0 || (d == 0 && !zero_ok))
-    throw std::invalid_argument("[server] " + key + ": expected a " + (zero_ok ? "non-negative" : "positive") +
-                                " number, got '" + v + "'");
-  return d;
+  return config_number("[server]", key, v, zero_ok);
 }
 
 double positive(const std::string& key, const std::string& v) { return number(key, v, false); }
@@ -25,12 +16,7 @@ double positive(const std::string& key, const std::string& v) { return number(ke
 // Counts (threads, robots, bytes): a whole number, so that "1.5" workers is refused
 // rather than cut to 1.
 size_t count(const std::string& key, const std::string& v, double most = 1e15) {
-  const double d = number(key, v, false);
-  if (d != std::floor(d) || d > most)
-    throw std::invalid_argument("[server] " + key + ": expected a positive whole number" +
-                                (most < 1e15 ? " up to " + std::to_string(static_cast<long long>(most)) : "") +
-                                ", got '" + v + "'");
-  return static_cast<size_t>(d);
+  return config_whole("[server]", key, v, 1, most);
 }
 
 }  // namespace
@@ -52,6 +38,7 @@ void ServerConfig::apply(const std::map<std::string, std::string>& s) {
     else if (k == "body_height_m") body_height_m = positive(k, v);
     else if (k == "topo_path_min_m") topo_path_min_m = number(k, v, true);
     else if (k == "object_ttl_s") object_ttl_s = positive(k, v);
+    else if (k == "history_keep_s") history_keep_s = number(k, v, true);
     else if (k == "commit_delay_ms") commit_delay_ms = number(k, v, true);
     else if (k == "robot_block_ms") robot_block_ms = positive(k, v);
     else if (k == "partition") partition = parse_robot_partition(v);

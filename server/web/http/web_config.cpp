@@ -1,25 +1,15 @@
 #include "server/web/http/web_config.h"
 
-#include <cmath>
 #include <filesystem>
 #include <stdexcept>
+
+#include "app/config_number.h"
 
 namespace fleetmap::web {
 namespace {
 
 size_t whole(const std::string& key, const std::string& v, double least, double most) {
-  size_t used = 0;
-  double d = 0;
-  try {
-    d = std::stod(v, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != v.size() || !std::isfinite(d) || d != std::floor(d) || d < least || d > most)
-    throw std::invalid_argument("[web] " + key + ": expected a whole number from " +
-                                std::to_string(static_cast<long long>(least)) + " to " +
-                                std::to_string(static_cast<long long>(most)) + ", got '" + v + "'");
-  return static_cast<size_t>(d);
+  return config_whole("[web]", key, v, least, most);
 }
 
 // Where a file of the source tree is, else where CMake installs it.
