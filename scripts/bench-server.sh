@@ -307,11 +307,15 @@ if has_phase soak; then
   start_servers 1
   SOAK_OUT="$FLEETMAP_HOME/soak-$(date +%Y%m%d-%H%M%S).tsv"
   rss_kib() { awk '/^VmRSS:/ { print $2 }' "/proc/$1/status" 2>/dev/null || echo 0; }
+  # The pages InnoDB holds in its pool: the fleet appends trajectory rows and GPS fixes
+  # all the time and the pool caches them as they are written, up to its size. RSS
+  # beyond them is what a leak would grow.
+  pool_kib() { echo $(( $(sql "SHOW GLOBAL STATUS LIKE 'Innodb_buffer_pool_bytes_data'" | awk '{ print $2 }') / 1024 )); }
   ( t0=$(date +%s)
-    echo "# s	server_kib	mariadbd_kib	load1"
+    echo "# s	server_kib	mariadbd_kib	load1	pool_data_kib"
     while :; do
-      printf '%s\t%s\t%s\t%s\n' $(( $(date +%s) - t0 )) "$(rss_kib "${SERVER_PIDS[0]}")" "$(rss_kib "$DB_PID")" \
-        "$(cut -d' ' -f1 /proc/loadavg)"
+      printf '%s\t%s\t%s\t%s\t%s\n' $(( $(date +%s) - t0 )) "$(rss_kib "${SERVER_PIDS[0]}")" "$(rss_kib "$DB_PID")" \
+        "$(cut -d' ' -f1 /proc/loadavg)" "$(pool_kib)"
       sleep 10
     done ) > "$SOAK_OUT" &
   SAMPLER=$!
@@ -319,14 +323,20 @@ if has_phase soak; then
     --server-pid "$(pids)" --server-procs 1 --workers "$WORKERS"
   kill "$SAMPLER"; wait "$SAMPLER" 2>/dev/null || true
   stop_servers
-  # Least-squares slope of RSS over time, MiB/min: over the whole run and without its first
-  # 2 minutes (connections, caches and the buffer pool's first pages come in then).
+  # Least-squares slopes, MiB/min, over the whole run and without its first 2 minutes
+  # (connections, caches and the buffer pool's first pages come in then): the server's
+  # RSS, mariadbd's, the pool's data pages, and mariadbd's RSS less those pages.
   for from in 0 120; do
     awk -v from="$from" -F'\t' '!/^#/ && $1 >= from { n++; x = $1 / 60; sx += x; sxx += x * x
-        for (k = 2; k <= 3; k++) { y = $k / 1024; sy[k] += y; sxy[k] += x * y; if (!(k in first)) first[k] = y; last[k] = y } }
+        v[2] = $2; v[3] = $3; v[5] = $5; v[6] = $3 - $5
+        for (k = 2; k <= 6; k++) { if (k == 4) continue; y = v[k] / 1024; sy[k] += y; sxy[k] += x * y
+          if (!(k in first)) first[k] = y; last[k] = y } }
+      function slope(k) { return (n * sxy[k] - sx * sy[k]) / d }
       END { d = n * sxx - sx * sx; if (n < 3 || d == 0) { print "soak: too few samples from " from " s"; exit }
         printf "soak from %d s (%d samples): fleetmap-server %.1f -> %.1f MiB, slope %.3f MiB/min; mariadbd %.1f -> %.1f MiB, slope %.3f MiB/min\n",
-          from, n, first[2], last[2], (n * sxy[2] - sx * sy[2]) / d, first[3], last[3], (n * sxy[3] - sx * sy[3]) / d }' "$SOAK_OUT"
+          from, n, first[2], last[2], slope(2), first[3], last[3], slope(3)
+        printf "  mariadbd: buffer pool data pages %.1f -> %.1f MiB, slope %.3f MiB/min; RSS less those pages %.1f -> %.1f MiB, slope %.3f MiB/min\n",
+          first[5], last[5], slope(5), first[6], last[6], slope(6) }' "$SOAK_OUT"
   done
   echo "(samples: $SOAK_OUT)"
 fi

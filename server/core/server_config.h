@@ -27,6 +27,7 @@ struct ServerConfig {
   // docs/benchmarks.md ("GetPath through the graph") for the figures behind 60.
   double topo_path_min_m = 60;
   double object_ttl_s = 300;          // SetObject: an observation expires this long after its last sighting
+  double history_keep_s = 0;          // trajectory rows and GPS fixes older than this are deleted; 0: kept
   int lock_wait_timeout_s = 1;        // then find and end the robot connection that blocks
   double robot_block_ms = 2000;       // a robot blocking another robot this long is ended (SPEC 5.3)
   double commit_delay_ms = 0;         // fault injection for crash tests: a wider window before COMMIT

@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "protocol/connection.h"
+#include "protocol/history_retention.h"
 #include "protocol/request_queue.h"
 #include "protocol/scene_store.h"
 #include "protocol/task_lifecycle.h"
@@ -31,7 +32,10 @@ size_t Housekeeping::run(const HousekeepingSchedule::Pass& pass) {
   // several Galera nodes do not conflict over the same rows.
   if (config_.partition.index == 0) {
     drop_orphan_requests();
-    if (pass.expire_observations) SceneStore(c_).expire_observations();
+    if (pass.expire_observations) {
+      SceneStore(c_).expire_observations();
+      delete_history_before(c_, config_.history_keep_s);
+    }
   }
   return pushed;
 }

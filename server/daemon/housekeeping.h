@@ -7,7 +7,8 @@
 //               and its open task fails
 //   orphans     requests from accounts that are no robot are dropped
 //   expiry      observations past their time are deleted (SetObject; the maps and views
-//               skip them from expires_at on already)
+//               skip them from expires_at on already), and with history_keep_s the
+//               poses and GPS fixes older than that (protocol/history_retention.h)
 // The decisions are pure functions below; Housekeeping applies them over MariaDB.
 #include <chrono>
 #include <cstddef>

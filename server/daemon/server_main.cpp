@@ -51,6 +51,8 @@ int main(int argc, char** argv) {
   setting("--robot-radius", "robot_radius_m", "METRES", "radius robots are planned with (GetPath), m (default 0.3)");
   setting("--object-ttl", "object_ttl_s", "SECONDS",
           "SetObject: an observed object expires this long after it was last seen, s (default 300)");
+  setting("--history-keep", "history_keep_s", "SECONDS",
+          "delete trajectory rows and GPS fixes older than this, s (default 0: keep them all)");
   setting("--robot-block-ms", "robot_block_ms", "MS",
           "a robot connection that blocks another robot's this long is ended, ms (default 2000)");
   setting("--partition", "partition", "I/N",

@@ -50,7 +50,7 @@ const std::vector<Case> kCases = {
      "",
      {"--alive-period", "--lost-after", "--workers", "--poll-max-ms", "--batch-robots", "--batch-requests",
       "--max-full-map-segments", "--ready-window", "--max-window", "--max-image-bytes", "--goal-tolerance",
-      "--robot-radius", "--object-ttl", "--commit-delay-ms", "--port"}},
+      "--robot-radius", "--object-ttl", "--history-keep", "--commit-delay-ms", "--port"}},
     {"fleetmap-robot",
      "",
      {"--port", "--start", "--duration", "--laser-height", "--beams", "--laser-sigma", "--people", "--particles",

@@ -41,6 +41,7 @@ TEST(ServerConfig, DefaultsAreTheDocumentedOnes) {
   EXPECT_EQ(c.body_height_m, 1.0);
   EXPECT_EQ(c.topo_path_min_m, 60);
   EXPECT_EQ(c.object_ttl_s, 300);
+  EXPECT_EQ(c.history_keep_s, 0);  // the history is kept unless a site says otherwise
   EXPECT_EQ(c.lock_wait_timeout_s, 1);
   EXPECT_EQ(c.commit_delay_ms, 0);
   EXPECT_EQ(c.robot_block_ms, 2000);
@@ -94,7 +95,7 @@ TEST(ServerConfig, EveryKeyOfTheFileIsApplied) {
            {"max_image_bytes", "1024"},   {"goal_tolerance_m", "0.25"},  {"robot_radius_m", "0.4"},
            {"body_height_m", "1.5"},      {"object_ttl_s", "60"},        {"lock_wait_timeout_s", "2"},
            {"commit_delay_ms", "0"},      {"robot_block_ms", "500"},
-           {"topo_path_min_m", "0"}});
+           {"topo_path_min_m", "0"},      {"history_keep_s", "604800"}});
   EXPECT_EQ(c.alive_period_s, 0.5);
   EXPECT_EQ(c.lost_after_periods, 3);
   EXPECT_EQ(c.workers, 4);
@@ -113,6 +114,7 @@ TEST(ServerConfig, EveryKeyOfTheFileIsApplied) {
   EXPECT_EQ(c.commit_delay_ms, 0);
   EXPECT_EQ(c.robot_block_ms, 500);
   EXPECT_EQ(c.topo_path_min_m, 0);
+  EXPECT_EQ(c.history_keep_s, 604800);
 }
 
 TEST(ServerConfig, FlagsAppliedAfterTheFileOverrideItAndLeaveTheRest) {
@@ -142,7 +144,7 @@ TEST(ServerConfig, ZeroIsAllowedOnlyWhereItMeansOff) {
   EXPECT_EQ(c.commit_delay_ms, 0);
   const std::string m = refusal(c, {{"commit_delay_ms", "-5"}});
   EXPECT_NE(m.find("commit_delay_ms: expected a non-negative number, got '-5'"), std::string::npos) << m;
-  EXPECT_NE(refusal(c, {{"workers", "0"}}).find("workers: expected a positive number"), std::string::npos);
+  EXPECT_NE(refusal(c, {{"workers", "0"}}).find("workers: expected a positive whole number up to 1024, got '0'"), std::string::npos);
 }
 
 TEST(ServerConfig, CountsMustBeWholeNumbers) {
