@@ -25,7 +25,7 @@
 #
 #   scripts/bench-cluster.sh [--robots N] [--phase-seconds S] [--commits N] [--no-shared] [--keep]
 #
-# Settings (environment): FLEETMAP_CLUSTER_HOME (default <checkout>/.fleetmap-bench-cluster),
+# Settings (environment): FLEETMAP_CLUSTER_HOME (default <checkout>/build/bench-cluster),
 # FLEETMAP_CLUSTER_PORT (scripts/cluster.sh), FLEETMAP_BENCH_PORT (the floor's instance;
 # default cluster port + 400), FLEETMAP_BIN (default <checkout>/build/bin, with fleetmap,
 # fleetmap-server and galera_robot_fleet). --keep leaves the cluster running.
@@ -53,7 +53,7 @@ positive_int bench-cluster.sh --phase-seconds "$PHASE_S"
 positive_int bench-cluster.sh --commits "$COMMITS"
 need_bins bench-cluster.sh fleetmap fleetmap-server galera_robot_fleet
 
-export FLEETMAP_CLUSTER_HOME="${FLEETMAP_CLUSTER_HOME:-$ROOT/.fleetmap-bench-cluster}"
+export FLEETMAP_CLUSTER_HOME="${FLEETMAP_CLUSTER_HOME:-$ROOT/build/bench-cluster}"
 export FLEETMAP_CLUSTER_PORT="${FLEETMAP_CLUSTER_PORT:-33406}"
 export FLEETMAP_CLUSTER_MYSQLD_ARGS="${FLEETMAP_CLUSTER_MYSQLD_ARGS:---innodb-buffer-pool-size=64M --innodb-log-file-size=32M}"
 unset FLEETMAP_CONFIG FLEETMAP_HOST FLEETMAP_PORT FLEETMAP_SOCKET FLEETMAP_DB FLEETMAP_USER FLEETMAP_PASSWORD FLEETMAP_HOSTS
