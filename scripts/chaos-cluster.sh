@@ -27,6 +27,8 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 BIN="${FLEETMAP_BIN:-$ROOT/build/bin}"
 CL="$ROOT/scripts/cluster.sh"
+# shellcheck source=scripts/cluster-fleet.sh
+. "$ROOT/scripts/cluster-fleet.sh"
 ROBOTS=20 PHASE_S=6 STEP_S=3 KEEP=0
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -38,10 +40,8 @@ while [ $# -gt 0 ]; do
     *) echo "chaos-cluster.sh: unknown option '$1' (--robots N, --phase-seconds S, --fault-step S, --keep)" >&2; exit 64 ;;
   esac
 done
-[[ "$ROBOTS" =~ ^[1-9][0-9]*$ ]] || { echo "chaos-cluster.sh: --robots expects a positive whole number, got '$ROBOTS'" >&2; exit 64; }
-for b in fleetmap fleetmap-server galera_robot_fleet; do
-  [ -x "$BIN/$b" ] || { echo "chaos-cluster.sh: $BIN/$b is missing (cmake --build build --target $b)" >&2; exit 1; }
-done
+positive_int chaos-cluster.sh --robots "$ROBOTS"
+need_bins chaos-cluster.sh fleetmap fleetmap-server galera_robot_fleet
 
 export FLEETMAP_CLUSTER_HOME="${FLEETMAP_CLUSTER_HOME:-$ROOT/.fleetmap-chaos}"
 export FLEETMAP_CLUSTER_PORT="${FLEETMAP_CLUSTER_PORT:-33406}"
@@ -49,34 +49,16 @@ export FLEETMAP_CLUSTER_MYSQLD_ARGS="${FLEETMAP_CLUSTER_MYSQLD_ARGS:---innodb-bu
 unset FLEETMAP_CONFIG FLEETMAP_HOST FLEETMAP_PORT FLEETMAP_SOCKET FLEETMAP_DB FLEETMAP_USER FLEETMAP_PASSWORD FLEETMAP_HOSTS
 P="$FLEETMAP_CLUSTER_PORT"
 W="$FLEETMAP_CLUSTER_HOME/chaos"
-declare -A SRV=()  # server name -> pid
 RC=0
 
-step() { echo "--- $(date +%T) $*"; }
 fail() { echo "FAIL: $*" >&2; RC=1; }
-conf() { bash "$CL" conf "$1"; }
-fm() { local n="$1"; shift; FLEETMAP_CONFIG="$(conf "$n")" "$BIN/fleetmap" "$@"; }
-server_start() {  # server_start NAME NODE PARTITION
-  FLEETMAP_CONFIG="$(conf "$2")" "$BIN/fleetmap-server" --log-level warn --partition "$3" --poll-max-ms 5 \
-    >> "$W/server-$1.log" 2>&1 &
-  SRV[$1]=$!
-}
-server_stop() { local p="${SRV[$1]:-}"; [ -n "$p" ] && { kill "$p" 2>/dev/null || true; wait "$p" 2>/dev/null || true; }; SRV[$1]=""; }
-server_kill() { local p="${SRV[$1]:-}"; [ -n "$p" ] && { kill -9 "$p" 2>/dev/null || true; wait "$p" 2>/dev/null || true; }; SRV[$1]=""; }
-FLEET=""
 cleanup() {
-  [ -n "$FLEET" ] && { kill "$FLEET" 2>/dev/null || true; wait "$FLEET" 2>/dev/null || true; }
-  for s in "${!SRV[@]}"; do server_stop "$s"; done
+  fleet_stop
+  servers_stop
   [ "$KEEP" = 1 ] || bash "$CL" stop >/dev/null 2>&1 || true
 }
 trap cleanup EXIT
 wsrep() { bash "$CL" sql "$1" -N -e "SHOW GLOBAL STATUS LIKE '$2'" 2>/dev/null | awk '{print $2}'; }
-fleet() {  # fleet NAME HOSTS SECONDS [STOPFILE PAUSE_MS]: one phase; its line goes to $W/NAME.out
-  "$BIN/galera_robot_fleet" --accounts "$W/accounts" --hosts "$2" --database "$DB" --seconds "$3" \
-    ${4:+--stop-file "$4"} ${5:+--pause-ms "$5"} \
-    --answer-timeout 40 --log-level warn > "$W/$1.out" 2> "$W/$1.err"
-}
-field() { awk -v k="$2" '{for (i = 1; i < NF; i += 2) if ($i == k) print $(i + 1)}' "$W/$1.out"; }
 check_phase() {  # check_phase NAME RC
   local line; line="$(cat "$W/$1.out" 2>/dev/null || true)"
   printf '%-8s %s\n' "$1" "$line"
@@ -90,34 +72,25 @@ rm -rf "$FLEETMAP_CLUSTER_HOME"
 bash "$CL" start >/dev/null
 mkdir -p "$W"
 DB="$(awk '$1=="name"{print $3; exit}' "$(conf 1)")"
-fm 1 map import "$ROOT/maps/example-room.map" --name chaos_room >/dev/null
-: > "$W/accounts"
-for i in $(seq 1 "$ROBOTS"); do
-  pw="chaos-$i-$$-$RANDOM"
-  (umask 077; echo "$pw" > "$W/r$i.pw")
-  fm 1 robot add "chaos_r$i" --map chaos_room --password-file "$W/r$i.pw" >/dev/null
-  echo "chaos_r$i $pw" >> "$W/accounts"
-done
+add_robots "$(conf 1)" "$ROBOTS"
 N1="127.0.0.1:$P" N2="127.0.0.1:$((P + 1))" N3="127.0.0.1:$((P + 2))"
 
 step "floor: one server, one node, $ROBOTS robots for ${PHASE_S} s"
-server_start floor 1 0/1
+server_start floor "$(conf 1)" 0/1
 rc=0; fleet floor "$N1" "$PHASE_S" || rc=$?
 server_stop floor
 check_phase floor "$rc"
 
-conflicts() { cat "$@" 2>/dev/null | grep -c "error 1213" || true; }
-
 step "shared: two servers claiming every robot, on nodes 1 and 2, robots on nodes 1-3, ${PHASE_S} s"
-server_start S1 1 0/1
-server_start S2 2 0/1
+server_start S1 "$(conf 1)" 0/1
+server_start S2 "$(conf 2)" 0/1
 rc=0; fleet shared "$N1,$N2,$N3" "$PHASE_S" || rc=$?
 server_stop S1; server_stop S2
 check_phase shared "$rc"
 
 step "cluster: servers 0/2 on node 1 and 1/2 on node 2, robots on nodes 1-3, ${PHASE_S} s"
-server_start A 1 0/2
-server_start B 2 1/2
+server_start A "$(conf 1)" 0/2
+server_start B "$(conf 2)" 1/2
 rc=0; fleet cluster "$N1,$N2,$N3" "$PHASE_S" || rc=$?
 check_phase cluster "$rc"
 SHARED_1213="$(conflicts "$W/server-S1.log" "$W/server-S2.log")"
@@ -131,10 +104,10 @@ sleep "$STEP_S"
 step "kill -9 node 3 (robots on it fail over)"; bash "$CL" kill 3 >/dev/null
 sleep "$STEP_S"
 step "node 3 rejoins"; bash "$CL" start 3 >/dev/null || fail "node 3 did not rejoin"
-step "kill -9 server A, restart it"; server_kill A; sleep 1; server_start A 1 0/2
+step "kill -9 server A, restart it"; server_kill A; sleep 1; server_start A "$(conf 1)" 0/2
 sleep "$STEP_S"
 step "kill -9 node 2 and server B together; B restarts on node 3"
-server_kill B; bash "$CL" kill 2 >/dev/null; server_start B 3 1/2
+server_kill B; bash "$CL" kill 2 >/dev/null; server_start B "$(conf 3)" 1/2
 sleep "$STEP_S"
 step "node 2 rejoins"; bash "$CL" start 2 >/dev/null || fail "node 2 did not rejoin"
 sleep 1
@@ -173,11 +146,10 @@ done
 
 echo "server retries of certification conflicts (1213): shared $SHARED_1213, partitioned $CLUSTER_1213" \
      "(p50 $(field shared p50_ms) ms against $(field cluster p50_ms) ms)"
-r() { awk -v a="$1" -v b="$2" 'BEGIN { if (b > 0) printf "%.2f", a / b; else print "-" }'; }
-echo "shared / floor: throughput $(r "$(field shared throughput_rps)" "$(field floor throughput_rps)")," \
-     "p50 $(r "$(field shared p50_ms)" "$(field floor p50_ms)")"
-echo "cluster / floor: throughput $(r "$(field cluster throughput_rps)" "$(field floor throughput_rps)")," \
-     "p50 $(r "$(field cluster p50_ms)" "$(field floor p50_ms)"), p99 $(r "$(field cluster p99_ms)" "$(field floor p99_ms)")" \
+echo "shared / floor: throughput $(ratio "$(field shared throughput_rps)" "$(field floor throughput_rps)")," \
+     "p50 $(ratio "$(field shared p50_ms)" "$(field floor p50_ms)")"
+echo "cluster / floor: throughput $(ratio "$(field cluster throughput_rps)" "$(field floor throughput_rps)")," \
+     "p50 $(ratio "$(field cluster p50_ms)" "$(field floor p50_ms)"), p99 $(ratio "$(field cluster p99_ms)" "$(field floor p99_ms)")" \
      "(same run; the machine is shared, so compare ratios)"
 [ "$RC" = 0 ] && echo "PASS" || echo "FAILED (logs in $W)"
 exit "$RC"

@@ -29,6 +29,7 @@
 #include <thread>
 
 #include <CLI/CLI.hpp>
+#include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
 
 #include "client/robot_client.h"
@@ -158,6 +159,8 @@ int main(int argc, char** argv) {
   app.add_option("--pause-ms", pause_ms, "each robot waits this long between bursts (0: a closed loop)")->capture_default_str();
   app.add_option("--log-level", log_level, "trace, debug, info, warn, error")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
+  // The log on stderr: stdout holds only the figures line the scripts parse.
+  spdlog::set_default_logger(spdlog::stderr_color_mt("fleet"));
   spdlog::set_level(spdlog::level::from_str(log_level));
   spdlog::set_pattern("%H:%M:%S.%e %^%-5l%$ [fleet] %v");
 
