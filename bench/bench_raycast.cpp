@@ -142,7 +142,6 @@ struct Settings {
   size_t poses_fast = 30000, poses_seed = 5000;
   double cell = SweepOptions{}.cell;
   size_t occluders = SweepOptions{}.occluders;
-  int sectors = SweepOptions{}.sectors;
   bool alternatives = false;
 };
 
@@ -173,10 +172,8 @@ MapResult bench_map(const std::string& map_path, const Settings& set) {
   const double seed_build = build_ms([&] { seed_p = std::make_unique<SeedRayCaster>(map, opt); });
   SweepOptions fast_opt{set.cell};
   fast_opt.occluders = set.occluders;
-  fast_opt.sectors = set.sectors;
   SweepOptions before_opt{4.0};
   before_opt.occluders = 0;
-  before_opt.sectors = 1;
   before_opt.kernel = SweepKernel::per_beam;
   const double fast_build = build_ms([&] { fast_p = std::make_unique<SweepRayCaster>(map, opt, fast_opt); });
   const double before_build = build_ms([&] { before_p = std::make_unique<SweepRayCaster>(map, opt, before_opt); });
@@ -213,9 +210,8 @@ MapResult bench_map(const std::string& map_path, const Settings& set) {
   row("before: sweep, 4 m cells, per beam", b1, b2, note);
   const Rate f1 = rate(fast, poses, beams, 1, repeats), f2 = rate(fast, poses, beams, threads, repeats);
   std::snprintf(note, sizeof note, "build %.1f ms, %.2f MiB", fast_build, mib(fast.memory_bytes()));
-  row("fast: sweep, " + std::to_string(fast.candidates().cell()).substr(0, 4) + " m, culled, " +
-          std::to_string(fast.candidates().sectors()) + " sectors",
-      f1, f2, note);
+  row("fast: sweep, " + std::to_string(fast.candidates().cell()).substr(0, 4) + " m cells, culled, batched", f1, f2,
+      note);
   std::printf("%-40s %9.1f x %9.1f x %9.1f x\n", "ratio fast / before", f1.wall / b1.wall, f2.wall / b2.wall,
               f1.cpu / b1.cpu);
   std::printf("%-40s %9.1f x %9.1f x %9.1f x\n", "ratio fast / seed", f1.wall / s1.wall, f2.wall / s2.wall,
@@ -230,7 +226,6 @@ MapResult bench_map(const std::string& map_path, const Settings& set) {
           SweepOptions so{c};
           so.occluders = occ;
           so.kernel = k;
-          so.sectors = 1;
           std::unique_ptr<SweepRayCaster> sw;
           const double ms = build_ms([&] { sw = std::make_unique<SweepRayCaster>(map, opt, so); });
           std::snprintf(note, sizeof note, "build %.1f ms, %.2f MiB", ms, mib(sw->memory_bytes()));
@@ -238,17 +233,6 @@ MapResult bench_map(const std::string& map_path, const Settings& set) {
                   (k == SweepKernel::batched ? "batched" : "per beam"),
               rate(*sw, poses, beams, 1, repeats), rate(*sw, poses, beams, threads, repeats), note);
         }
-    for (double c : {1.0, 2.0})
-      for (int sec : {4, 8, 16, 32}) {
-        SweepOptions so{c};
-        so.sectors = sec;
-        std::unique_ptr<SweepRayCaster> sw;
-        const double ms = build_ms([&] { sw = std::make_unique<SweepRayCaster>(map, opt, so); });
-        std::snprintf(note, sizeof note, "build %.1f ms, %.2f MiB", ms, mib(sw->memory_bytes()));
-        row("sweep " + std::to_string(c).substr(0, 3) + " m, 32 occluders, batched, " +
-                std::to_string(sw->candidates().sectors()) + " sectors",
-            rate(*sw, poses, beams, 1, repeats), rate(*sw, poses, beams, threads, repeats), note);
-      }
     struct Alt {
       const char* name;
       GridOptions g;
@@ -311,8 +295,6 @@ int main(int argc, char** argv) {
   app.add_option("--cell", set.cell, "cell of the fast caster's candidate grid, metres (0: by density)")
       ->capture_default_str();
   app.add_option("--occluders", set.occluders, "walls tried as occluders per cell (0: no culling)")
-      ->capture_default_str();
-  app.add_option("--sectors", set.sectors, "direction sectors of the fast caster's lists (1: one list per cell)")
       ->capture_default_str();
   app.add_flag("--alternatives", set.alternatives, "also time the other designs and cell sizes tried");
   CLI11_PARSE(app, argc, argv);

@@ -1,7 +1,6 @@
 #include "common/raycast/beam_order.h"
 
 #include <cstring>
-#include <limits>
 #include <numeric>
 
 #include "common/raycast/ray_caster.h"
@@ -45,11 +44,6 @@ const BeamOrder& beam_order(const std::vector<double>& rel) {
     order.first[b] = static_cast<uint32_t>(
         std::lower_bound(order.pseudo.begin(), order.pseudo.end(), static_cast<double>(b) / BeamOrder::kBinsPerUnit) -
         order.pseudo.begin());
-  order.padded = order.pseudo;
-  order.padded.push_back(std::numeric_limits<double>::infinity());
-  order.per_bin = 0;
-  for (int b = 0; b < BeamOrder::kBins; ++b)
-    order.per_bin = std::max(order.per_bin, static_cast<int>(order.first[b + 1] - order.first[b]));
   return order;
 }
 

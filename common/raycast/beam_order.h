@@ -35,24 +35,15 @@ struct BeamOrder {
   std::vector<uint32_t> beam;   // beam[k]: the beam with the k-th pseudo-angle
   std::vector<Point> unit;      // unit[k]: ray_direction() of that beam's relative angle
   std::vector<uint32_t> first;  // first[b]: how many pseudo-angles are below b / kBinsPerUnit
-  std::vector<double> padded;   // pseudo, then +infinity: lower() reads one past the end
-  int per_bin = 0;              // the most pseudo-angles in one bin
   // The smallest arc holding every beam runs counter-clockwise from position arc_first
   // to position arc_last; all_around when the beams leave no gap worth testing against.
   size_t arc_first = 0, arc_last = 0;
   bool all_around = true;
 
-  // The first k with pseudo[k] >= x (strict: > x), for x in [0, 4]. The answer lies
-  // within per_bin steps of the bin's first; a fixed count of branch-free steps (one
-  // for a scan's beams, which are wider apart than a bin) replaces a loop whose exit
-  // the processor cannot predict. x * kBinsPerUnit is exact (a power of two).
+  // The first k with pseudo[k] >= x (strict: > x), for x in [0, 4].
   size_t lower(double x, bool strict) const {
     size_t k = first[std::clamp(static_cast<int>(x * kBinsPerUnit), 0, kBins)];
-    const double* p = padded.data();
-    if (strict)
-      for (int i = 0; i < per_bin; ++i) k += p[k] <= x;
-    else
-      for (int i = 0; i < per_bin; ++i) k += p[k] < x;
+    while (k < pseudo.size() && (strict ? pseudo[k] <= x : pseudo[k] < x)) ++k;
     return k;
   }
 };

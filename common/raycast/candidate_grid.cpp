@@ -8,7 +8,6 @@
 #include "common/raycast/occlusion.h"
 
 namespace fleetmap {
-
 namespace {
 
 Rect segment_box(const RaySegment& s) {
@@ -55,34 +54,7 @@ Arc arc_from_cell(const Rect& cell, const RaySegment& w) {
           std::nextafter(static_cast<float>(hi - lo + 2 * kArcSlack), 5.0f)};
 }
 
-// Whether the arc [lo, lo + width] (modulo 4) meets sector s of `sectors`, grown by a
-// margin far above the rounding of the bounds (the arc itself is wider than exact).
-bool arc_meets_sector(float lo, float width, int s, int sectors) {
-  if (width >= 4) return true;
-  constexpr double kMargin = 1e-6;  // pseudo-angle units
-  const double a = 4.0 * s / sectors - kMargin, b = 4.0 * (s + 1) / sectors + kMargin;
-  const double x0 = lo, x1 = static_cast<double>(lo) + width;
-  for (const double shift : {-4.0, 0.0, 4.0})
-    if (x0 <= b + shift && a + shift <= x1) return true;
-  return false;
-}
-
 }  // namespace
-
-CandidateGrid::Candidate CandidateGrid::Candidate::make(uint32_t id, double nearest, double arc_lo, double arc_width) {
-  Candidate c{id, 0, 0, kAllAround};
-  c.near_q = static_cast<uint16_t>(std::clamp(std::floor(nearest / kNearUnit), 0.0, 65535.0));
-  if (arc_width < 4) {
-    const double lo = std::clamp(std::floor(arc_lo / kArcUnit), 0.0, 65535.0);
-    // One unit more than the rounding of both ends needs.
-    const double width = std::ceil((arc_lo + arc_width) / kArcUnit - lo) + 1;
-    if (width < kAllAround) {
-      c.lo_q = static_cast<uint16_t>(lo);
-      c.width_q = static_cast<uint16_t>(width);
-    }
-  }
-  return c;
-}
 
 double CandidateGrid::estimate_mean_list(const LaserObstacles& obstacles, double cell, double rmax) {
   const Rect& b = obstacles.bounds;
@@ -107,11 +79,8 @@ size_t CandidateGrid::estimate_bytes(const LaserObstacles& obstacles, double cel
 }
 
 CandidateGrid::CandidateGrid(const LaserObstacles& obstacles, double cell, double rmax, size_t max_bytes,
-                             size_t occluders, int sectors)
-    : wall_count_(static_cast<uint32_t>(obstacles.walls.size())),
-      sectors_(sectors),
-      lists_per_cell_(sectors > 1 ? sectors + 1 : 1) {
-  offsets_.assign(1, 0);
+                             size_t occluders)
+    : wall_count_(static_cast<uint32_t>(obstacles.walls.size())) {
   if (obstacles.obstacles.empty()) return;
   while (estimate_bytes(obstacles, cell, rmax) > max_bytes) cell *= 2;
   const double inv_cell = 1 / cell;
@@ -175,8 +144,7 @@ CandidateGrid::CandidateGrid(const LaserObstacles& obstacles, double cell, doubl
   // cell by one of the nearest walls kept so far is left out. A kept occluder may itself
   // be hidden by a nearer one only if it was not kept, so every drop is backed by a kept
   // wall or by a chain of strictly nearer hiders ending at one.
-  std::vector<uint32_t> kept_offsets(cells() * lists_per_cell_ + 1, 0);
-  std::vector<std::vector<Candidate>> by_sector(lists_per_cell_);  // one cell's kept candidates
+  std::vector<uint32_t> kept_offsets(cells() + 1, 0);
   // A hider must cover, from the cell's centre, the whole angle the wall covers (what
   // hides() implies for the centre): a cheap filter on pseudo-angle intervals first.
   struct Hider {
@@ -191,7 +159,6 @@ CandidateGrid::CandidateGrid(const LaserObstacles& obstacles, double cell, doubl
       const Rect rect = frame_.cell_rect(ix, iy);
       const Point centre = frame_.centre(ix, iy);
       hiders.clear();
-      for (auto& l : by_sector) l.clear();
       for (uint32_t k = offsets_[c]; k < offsets_[c + 1]; ++k) {
         const auto [key, id] = sorted[k];
         Arc arc;  // specials: every direction (their cone in the sweep is wider than the box)
@@ -216,17 +183,9 @@ CandidateGrid::CandidateGrid(const LaserObstacles& obstacles, double cell, doubl
           if (hiders.size() < occluders && !on_line) hiders.push_back({id, lo, hi});
           arc = arc_from_cell(rect, w);
         }
-        const Candidate cand = Candidate::make(id, lower_bound(key), arc.lo, arc.width);
-        if (sectors_ == 1 || arc.width > 4.0 / sectors_)
-          by_sector[lists_per_cell_ - 1].push_back(cand);  // the whole list, or the wide one
-        else
-          for (int sec = 0; sec < sectors_; ++sec)
-            if (arc_meets_sector(arc.lo, arc.width, sec, sectors_)) by_sector[sec].push_back(cand);
+        list_.push_back({id, lower_bound(key), arc.lo, arc.width});
       }
-      for (int sec = 0; sec < lists_per_cell_; ++sec) {
-        list_.insert(list_.end(), by_sector[sec].begin(), by_sector[sec].end());
-        kept_offsets[c * lists_per_cell_ + sec + 1] = static_cast<uint32_t>(list_.size());
-      }
+      kept_offsets[c + 1] = static_cast<uint32_t>(list_.size());
     }
   offsets_ = std::move(kept_offsets);
   list_.shrink_to_fit();

@@ -10,12 +10,9 @@
 //             so the beams a wall covers are a run of consecutive entries, tested in a
 //             loop the compiler vectorises (AVX2 where the processor has it, SSE2
 //             otherwise); the sweep stops once no beam's range is longer than the next
-//             candidate's distance (the list is nearest first). With a list split by
-//             direction (candidate_grid.h), each sector the beams fall in is swept
-//             apart, with its own beams and its own stop.
+//             candidate's distance (the list is nearest first).
 #include <cstddef>
 #include <cstdint>
-#include <optional>
 #include <span>
 #include <vector>
 
@@ -27,8 +24,6 @@ namespace fleetmap {
 struct SweepScan {
   const LaserObstacles* obstacles = nullptr;
   std::span<const CandidateGrid::Candidate> near;  // the origin's list, nearest first
-  const CandidateGrid* grid = nullptr;             // its sectors, for the batched kernel
-  std::optional<size_t> cell;                      // the origin's cell
   uint32_t walls = 0;                              // ids below are walls, the others specials
   Point origin;
   double theta = 0;

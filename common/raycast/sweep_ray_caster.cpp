@@ -23,22 +23,14 @@ double cell_for(const LaserObstacles& obstacles, const SweepOptions& sweep, doub
              : SweepOptions::kSparseCell;
 }
 
-// The candidate grid with as many of the sectors asked for as fit in max_bytes (one
-// sector always fits: CandidateGrid doubles its cell until the estimate does).
-CandidateGrid fitting_grid(const LaserObstacles& obstacles, double cell, double rmax, const SweepOptions& sweep) {
-  for (int sectors = std::clamp(sweep.sectors, 1, 64);; sectors /= 2) {
-    CandidateGrid g(obstacles, cell, rmax, sweep.max_bytes, sweep.occluders, sectors);
-    if (sectors == 1 || g.memory_bytes() <= sweep.max_bytes) return g;
-  }
-}
-
 }  // namespace
 
 SweepRayCaster::SweepRayCaster(const Map& map, RayCasterOptions options, SweepOptions sweep)
     : options_(options),
       kernel_(sweep.kernel),
       obstacles_(prepare_laser_obstacles(map, options.laser_height)),
-      candidates_(fitting_grid(obstacles_, cell_for(obstacles_, sweep, options.rmax), options.rmax, sweep)) {}
+      candidates_(obstacles_, cell_for(obstacles_, sweep, options.rmax), options.rmax, sweep.max_bytes,
+                  sweep.occluders) {}
 
 size_t SweepRayCaster::memory_bytes() const {
   return candidates_.memory_bytes() + obstacles_.walls.capacity() * sizeof(RaySegment) +
@@ -47,31 +39,24 @@ size_t SweepRayCaster::memory_bytes() const {
 
 double SweepRayCaster::cast_direction(Point o, Point d) const {
   double best = options_.rmax;
-  const std::optional<size_t> cell = candidates_.cell_of(o);
-  if (!cell) return best;
   const uint32_t walls = candidates_.wall_count();
   const double pd = pseudo_angle(d);
-  auto sweep = [&](std::span<const CandidateGrid::Candidate> list) {
-    for (const CandidateGrid::Candidate& c : list) {
-      if (c.nearest() >= best) break;  // nearest first: nothing further on can be nearer
-      // The ray's direction outside the arc of directions from the cell to it: no hit.
-      double off = pd - c.arc_lo();
-      off += off < 0 ? 4 : 0;
-      if (off > c.arc_width()) continue;
-      if (c.id >= walls) {
-        best = std::min(best, obstacles_.specials[c.id - walls].distance(o, d));
-        continue;
-      }
-      const RaySegment& w = obstacles_.walls[c.id];
-      // Both ends (widened by the test's tolerance) on one side of the ray's line: no hit.
-      const double sa = cross(d, w.a - o), sb = sa + cross(d, w.e);
-      if ((sa > kSideSlack && sb > kSideSlack) || (sa < -kSideSlack && sb < -kSideSlack)) continue;
-      best = std::min(best, ray_segment_distance(w, o, d));
+  for (const CandidateGrid::Candidate& c : candidates_.near(o)) {
+    if (c.nearest >= best) break;  // nearest first: nothing further on can be nearer
+    // The ray's direction outside the arc of directions from the cell to it: no hit.
+    double off = pd - c.arc_lo;
+    off += off < 0 ? 4 : 0;
+    if (off > c.arc_width) continue;
+    if (c.id >= walls) {
+      best = std::min(best, obstacles_.specials[c.id - walls].distance(o, d));
+      continue;
     }
-  };
-  const int sectors = candidates_.sectors();
-  if (sectors > 1) sweep(candidates_.list(*cell, sectors));  // the wide list
-  sweep(candidates_.list(*cell, CandidateGrid::sector_of(pd, sectors)));
+    const RaySegment& w = obstacles_.walls[c.id];
+    // Both ends (widened by the test's tolerance) on one side of the ray's line: no hit.
+    const double sa = cross(d, w.a - o), sb = sa + cross(d, w.e);
+    if ((sa > kSideSlack && sb > kSideSlack) || (sa < -kSideSlack && sb < -kSideSlack)) continue;
+    best = std::min(best, ray_segment_distance(w, o, d));
+  }
   return best;
 }
 
@@ -80,8 +65,6 @@ void SweepRayCaster::cast_scan(Point o, double theta, const std::vector<double>&
   SweepScan scan;
   scan.obstacles = &obstacles_;
   scan.near = candidates_.near(o);
-  scan.grid = &candidates_;
-  scan.cell = candidates_.cell_of(o);
   scan.walls = candidates_.wall_count();
   scan.origin = o;
   scan.theta = theta;

@@ -39,9 +39,6 @@ struct SweepOptions {
   SweepKernel kernel = SweepKernel::batched;
   // Walls of a cell's list tried as occluders of the farther ones (0: no culling).
   size_t occluders = 32;
-  // Direction sectors of each cell's list (candidate_grid.h), a power of two up to 64;
-  // halved until the lists fit in max_bytes. 1: one list per cell.
-  int sectors = 1;
 };
 
 class SweepRayCaster : public RayCaster {
