@@ -73,6 +73,7 @@ ParticleFilterOptions ParticleFilterOptions::robust() {
   ParticleFilterOptions o;
   o.sensor.combination = BeamCombination::Product;
   o.sensor.gamma = 0.1;
+  o.sensor.short_beyond = 0.5;  // people in the scans: sensor_model.h, docs/localization.md
   o.tempering_ess = 0.3;
   o.tempering_stages = 3;
   o.global_density = 0.3;
