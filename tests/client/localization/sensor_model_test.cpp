@@ -142,14 +142,14 @@ double crowd_score(const SensorModel& m, double pose_x) {
 }
 
 TEST(SensorModel, PeopleInFrontOfAWallDoNotPullThePoseOntoThem) {
-  // The robot's model (robust_search(), also under fast_search()): the true pose
+  // The `fast` preset's model (fast_search()): the true pose
   // must outscore one 0.3 m nearer the wall, which would put the wall where the crowd
   // stands.
-  const SensorModel model(ParticleFilterOptions::robust_search().sensor);
+  const SensorModel model(ParticleFilterOptions::fast_search().sensor);
   EXPECT_GT(crowd_score(model, 0.0), crowd_score(model, 0.3));
   // The same model without the flat short term lets the crowd decide: this is what the
   // test guards against.
-  SensorModelOptions penalised = ParticleFilterOptions::robust_search().sensor;
+  SensorModelOptions penalised = ParticleFilterOptions::fast_search().sensor;
   penalised.short_beyond = 0;
   const SensorModel before(penalised);
   EXPECT_LT(crowd_score(before, 0.0), crowd_score(before, 0.3));
