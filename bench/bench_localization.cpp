@@ -88,6 +88,7 @@ void bench_map(const std::string& path, const TrialSettings& base, const std::ve
       k.filter = preset(c).value_or(base.filter);
       k.filter.particles = base.filter.particles;
       k.filter.threads = base.filter.threads;
+      if (base.short_beyond >= 0) k.filter.sensor.short_beyond = base.short_beyond;
       report_kidnap(stdout, map, world, k);
     }
   }
@@ -127,6 +128,10 @@ int main(int argc, char** argv) {
   app.add_option("--look-around-turn", turn_deg, "degrees turned per look-around step")->capture_default_str();
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
+  app.add_option("--short-beyond", s.short_beyond,
+                 "sensor model: beams stopped more than this many metres short count as this short, for every "
+                 "preset (0: eq. 5 as written; negative: the preset's)")
+      ->capture_default_str();
   app.add_option("--threads", s.filter.threads, "filter threads")->capture_default_str();
   app.add_option("--config", config, "seed, robust, search, fast (comma-separated) or all")->capture_default_str();
   app.add_option("--kidnaps", s.kidnaps, "kidnapping trials per map and config (0: none)")->capture_default_str();

@@ -21,11 +21,13 @@ SensorModel::SensorModel(SensorModelOptions options) : options_(options) {
   if (!(options.alpha >= 0) || !(options.beta >= 0) || !(options.gamma >= 0) ||
       options.alpha + options.beta + options.gamma == 0)
     throw std::invalid_argument("SensorModelOptions.alpha, beta, gamma: expected >= 0 and not all 0");
+  if (!(options.short_beyond >= 0)) throw std::invalid_argument("SensorModelOptions.short_beyond: expected >= 0 metres");
   normal_peak_ = options.alpha / (std::sqrt(2 * kPi) * options.sigma_m);
   log_normal_peak_ = options.alpha > 0 ? std::log(normal_peak_) : kNegInf;
   inv_two_var_ = 1 / (2 * options.sigma_m * options.sigma_m);
   uniform_ = options.beta / options.rmax;
   floor_ = options.gamma / (2 * options.rmax);
+  short_floor_ = options.short_beyond > 0 ? -options.short_beyond : kNegInf;
 }
 
 double SensorModel::uniform_terms(double delta) const {
@@ -35,10 +37,12 @@ double SensorModel::uniform_terms(double delta) const {
 }
 
 double SensorModel::likelihood(double delta) const {
+  delta = clamp_short(delta);
   return normal_peak_ * std::exp(-delta * delta * inv_two_var_) + uniform_terms(delta);
 }
 
 double SensorModel::log_likelihood(double delta) const {
+  delta = clamp_short(delta);
   const double q = delta * delta * inv_two_var_;
   const double u = uniform_terms(delta);
   const double log_normal = log_normal_peak_ - q;
@@ -59,7 +63,7 @@ double SensorModel::log_weight(const double* measured, const double* synthetic, 
   // case: with sigma_m 0.5 m and RMAX 15 m the exponent is at most 450), else in logs.
   double inv_sum = 0;
   for (size_t j = 0; j < n; ++j) {
-    const double d = measured[j] - synthetic[j];
+    const double d = clamp_short(measured[j] - synthetic[j]);
     const double q = d * d * inv_two_var_;
     if (q > kMaxExponent) return log_weight_harmonic_slow(measured, synthetic, n);
     inv_sum += 1 / (normal_peak_ * std::exp(-q) + uniform_terms(d));

@@ -26,6 +26,15 @@
 // Beyond the seed, gamma adds a uniform floor on both sides, gamma U(-RMAX, RMAX) (Thrun
 // et al.'s z_rand): eq. (5) floors only readings shorter than expected; the floor bounds
 // what one grazing ray can cost.
+//
+// Beyond the seed, short_beyond (people in the scans, docs/localization.md "People in the
+// scans"): a beam stopped more than short_beyond metres short of the synthetic range
+// counts as stopped exactly short_beyond short, delta = max(delta, -short_beyond). Such
+// a reading is explained by something the map does not hold, wherever the particle
+// stands, so it gets one flat likelihood instead of a penalty that grows with the gap:
+// otherwise a pose that puts walls where the people stand outscores the truth once
+// people hide most beams. Readings longer than expected (through a wall) keep the full
+// penalty, so a pose in open space does not win by "explaining" every wall as a person.
 #include <cstddef>
 
 namespace fleetmap::localization {
@@ -43,13 +52,15 @@ struct SensorModelOptions {
   // Not in the seed: gamma U(-RMAX, RMAX), a floor for readings off either way (Thrun
   // et al. 2005's z_rand); 0 keeps eq. (5) exactly.
   double gamma = 0.0;
+  // Not in the seed: delta = max(delta, -short_beyond) (metres; 0 keeps eq. (5) exactly).
+  double short_beyond = 0.0;
   BeamCombination combination = BeamCombination::Harmonic;
 };
 
 class SensorModel {
  public:
   // Throws std::invalid_argument when sigma_m or rmax is not positive, or alpha, beta or
-  // gamma is negative, or all are zero.
+  // gamma is negative, or all are zero, or short_beyond is negative.
   explicit SensorModel(SensorModelOptions options = {});
 
   // Eq. (5) for one beam, and its natural logarithm (exact also where L underflows).
@@ -63,6 +74,7 @@ class SensorModel {
   const SensorModelOptions& options() const { return options_; }
 
  private:
+  double clamp_short(double delta) const { return delta < short_floor_ ? short_floor_ : delta; }
   double uniform_terms(double delta) const;  // beta U(-RMAX, 0) + gamma U(-RMAX, RMAX)
   double log_weight_harmonic_slow(const double* measured, const double* synthetic, size_t n) const;
 
@@ -72,6 +84,7 @@ class SensorModel {
   double inv_two_var_;      // 1 / (2 sigma_m^2)
   double uniform_;          // beta / RMAX
   double floor_;            // gamma / (2 RMAX)
+  double short_floor_;      // -short_beyond, or -inf when off
 };
 
 }  // namespace fleetmap::localization

@@ -5,6 +5,21 @@
 
 namespace fleetmap::localization {
 
+namespace {
+constexpr double kWallMargin = 0.05;  // metres left between a person and a wall
+constexpr int kClearanceRays = 32;    // rays that check a disc is clear of walls
+constexpr int kPlaceAttempts = 20;
+
+// Range along unit direction dir from o to the disc (centre c, radius r), or +inf.
+double ray_disc(Point o, Point dir, Point c, double r) {
+  const Point oc = c - o;
+  const double t = dot(oc, dir);
+  const double perp_sq = dot(oc, oc) - t * t;
+  if (t <= 0 || perp_sq > r * r) return INFINITY;
+  return std::max(0.0, t - std::sqrt(r * r - perp_sq));
+}
+}  // namespace
+
 LaserSimulator::LaserSimulator(std::shared_ptr<const RayCaster> world, LaserSimulatorOptions options, uint64_t seed)
     : world_(std::move(world)), options_(options), beams_(evenly_spread_angles(options.beams, options.fov)), rng_(seed) {}
 
@@ -14,25 +29,80 @@ std::vector<double> LaserSimulator::true_scan(const Pose& truth) const {
   return r;
 }
 
+bool LaserSimulator::clear_of_walls(Point c, double radius) const {
+  for (int k = 0; k < kClearanceRays; ++k)
+    if (world_->cast(c, 2 * kPi * k / kClearanceRays) < radius + kWallMargin) return false;
+  return true;
+}
+
+bool LaserSimulator::in_view(const Pose& truth, const Person& p) const {
+  if (!(p.radius > 0)) return false;
+  const Point oc = p.centre - truth.point();
+  const double d = norm(oc);
+  const double bearing = std::atan2(oc.y, oc.x);
+  if (std::fabs(angle_diff(bearing, truth.theta)) > options_.fov / 2) return false;
+  if (d - p.radius < options_.min_person_range || d + p.radius > rmax()) return false;
+  return world_->cast(truth.point(), bearing) >= d;  // its centre in line of sight
+}
+
+bool LaserSimulator::place_in_view(const Pose& truth, Person& p) {
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  for (int a = 0; a < kPlaceAttempts; ++a) {
+    const double radius = (options_.person_width + (2 * u01(rng_) - 1) * options_.person_width_spread) / 2;
+    const double bearing = truth.theta + (u01(rng_) - 0.5) * options_.fov;
+    const double wall = world_->cast(truth.point(), bearing);
+    const double lo = options_.min_person_range + radius, hi = std::min(wall, rmax()) - radius - kWallMargin;
+    if (!(radius > 0) || hi <= lo) continue;
+    const Point c = truth.point() + (lo + u01(rng_) * (hi - lo)) * ray_direction(bearing);
+    if (!clear_of_walls(c, radius)) continue;
+    p.centre = c;
+    p.radius = radius;
+    p.velocity = options_.person_speed * ray_direction(2 * kPi * u01(rng_));
+    return true;
+  }
+  p.radius = 0;  // nowhere to stand in view now (the laser against a wall): try next scan
+  return false;
+}
+
+void LaserSimulator::walk(const Pose& truth, Person& p) {
+  const double step = options_.person_speed * options_.scan_period;
+  if (!(p.radius > 0) || !(step > 0)) return;
+  const Point next = p.centre + options_.scan_period * p.velocity;
+  const double heading = std::atan2(p.velocity.y, p.velocity.x);
+  const bool blocked = world_->cast(p.centre, heading) < step + p.radius + kWallMargin ||
+                       distance(next, truth.point()) < options_.min_person_range + p.radius ||
+                       !clear_of_walls(next, p.radius);
+  if (!blocked) {
+    p.centre = next;
+    return;
+  }
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  p.velocity = options_.person_speed * ray_direction(2 * kPi * u01(rng_));  // turn, stay this scan
+}
+
 std::vector<double> LaserSimulator::scan(const Pose& truth) {
   std::vector<double> r = true_scan(truth);
+  if (options_.people > 0) {
+    if (people_.empty()) {
+      people_.resize(static_cast<size_t>(options_.people));
+      for (Person& p : people_) place_in_view(truth, p);
+    } else {
+      for (Person& p : people_) {
+        walk(truth, p);
+        if (!in_view(truth, p)) place_in_view(truth, p);
+      }
+    }
+    std::vector<Point> dirs(beams_.size());
+    scan_directions(truth.theta, beams_, dirs.data());
+    for (const Person& p : people_) {
+      if (!(p.radius > 0)) continue;
+      for (size_t j = 0; j < r.size(); ++j) r[j] = std::min(r[j], ray_disc(truth.point(), dirs[j], p.centre, p.radius));
+    }
+  }
   const double rmax = this->rmax();
   std::normal_distribution<double> noise(0.0, options_.sigma);
   for (double& v : r)
     if (v < rmax) v = std::clamp(v + noise(rng_), 0.0, rmax);
-  if (beams_.size() < 2) return r;
-  const double step = beams_[1] - beams_[0];
-  std::uniform_int_distribution<size_t> any_beam(0, beams_.size() - 1);
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
-  for (int k = 0; k < options_.people; ++k) {
-    const size_t c = any_beam(rng_);
-    if (r[c] <= options_.min_person_range) continue;
-    const double d = options_.min_person_range + u01(rng_) * (r[c] - options_.min_person_range);
-    const double half = std::atan2(options_.person_width / 2, d);
-    const long reach = static_cast<long>(half / step);
-    for (long j = static_cast<long>(c) - reach; j <= static_cast<long>(c) + reach; ++j)
-      if (j >= 0 && j < static_cast<long>(r.size())) r[j] = std::min(r[j], d);
-  }
   return r;
 }
 

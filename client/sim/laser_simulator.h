@@ -3,9 +3,15 @@
 // a RayCaster gives at the true pose, plus N(0, sigma_L) noise, clamped to [0, RMAX].
 // Beams that hit nothing return RMAX exactly, as a real scanner reports no return.
 //
-// Unmodelled obstacles (seed 000 eq. 5's uniform term): `people` per scan, each a disc of
-// person_width metres at a distance uniform between min_person_range and the wall behind
-// it, covering the beams it subtends; those beams return the person's distance.
+// Unmodelled obstacles (seed 000 eq. 5's uniform term): `people` walking discs, each
+// person_width metres across (drawn per person within +-person_width_spread), kept in
+// the scans: a person is placed in free space in the laser's field of view, in line of
+// sight, at least min_person_range from the laser and clear of every wall; it walks at
+// person_speed (scan_period seconds between scans) and turns to a new random heading
+// when its next step would bring it against a wall or the laser. A person that leaves
+// the field of view, the range or the line of sight is placed again in view, so every
+// scan holds `people` of them (they may hide one another). Beams meet the discs exactly
+// and return the nearer of the disc and the wall, then get the same noise.
 #include <cstdint>
 #include <memory>
 #include <random>
@@ -20,9 +26,19 @@ struct LaserSimulatorOptions {
   int beams = 131;          // NL
   double fov = kPi;         // over 180 degrees
   double sigma = 0.05;      // sigma_L, metres (seed 000 section 4.1)
-  int people = 0;           // unmodelled obstacles per scan
-  double person_width = 0.5;      // metres
-  double min_person_range = 0.5;  // metres
+  int people = 0;           // unmodelled walking people in every scan
+  double person_width = 0.5;         // metres, a person's mean diameter
+  double person_width_spread = 0.1;  // metres: diameters uniform in width +- spread (0.4-0.6 m)
+  double min_person_range = 0.5;     // metres from the laser to a person's edge
+  double person_speed = 1.0;         // metres per second, walking
+  double scan_period = 0.2;          // seconds between scans (SimRobot's rate)
+};
+
+// One simulated person: a disc in map coordinates with a walking velocity.
+struct Person {
+  Point centre;
+  double radius = 0.25;
+  Point velocity;  // metres per second
 };
 
 class LaserSimulator {
@@ -30,18 +46,27 @@ class LaserSimulator {
   // world: the ground truth (its rmax is the laser's).
   LaserSimulator(std::shared_ptr<const RayCaster> world, LaserSimulatorOptions options, uint64_t seed);
 
+  // The next scan: the people walk one scan_period, then the laser reads.
   std::vector<double> scan(const Pose& truth);
   // The same without noise or people.
   std::vector<double> true_scan(const Pose& truth) const;
 
   const std::vector<double>& beam_angles() const { return beams_; }
   double rmax() const { return world_->options().rmax; }
+  // The people of the last scan.
+  const std::vector<Person>& people() const { return people_; }
 
  private:
+  bool clear_of_walls(Point c, double radius) const;
+  bool in_view(const Pose& truth, const Person& p) const;
+  bool place_in_view(const Pose& truth, Person& p);
+  void walk(const Pose& truth, Person& p);
+
   std::shared_ptr<const RayCaster> world_;
   LaserSimulatorOptions options_;
   std::vector<double> beams_;
   std::mt19937_64 rng_;
+  std::vector<Person> people_;
 };
 
 }  // namespace fleetmap::localization

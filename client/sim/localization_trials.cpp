@@ -369,10 +369,13 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
   s.filter.particles = base.filter.particles;
   s.filter.threads = base.filter.threads;
   s.filter.kld.max_particles = base.filter.particles;
+  if (base.short_beyond >= 0) s.filter.sensor.short_beyond = base.short_beyond;
   const ParticleFilterOptions& f = s.filter;
-  std::fprintf(out, "-- %s: %s, gamma %.2g, tempering ESS %.2g x %d stages, init density %.2g /m2, roughening %.2g%s\n",
-               name.c_str(), describe(f), f.sensor.gamma, f.tempering_ess, f.tempering_stages, f.global_density,
-               f.roughening, f.global_search ? ", global search (likelihood field, ray-cast rerank)" : "");
+  std::fprintf(out,
+               "-- %s: %s, gamma %.2g, short beyond %.2g m, tempering ESS %.2g x %d stages, init density %.2g /m2, "
+               "roughening %.2g%s\n",
+               name.c_str(), describe(f), f.sensor.gamma, f.sensor.short_beyond, f.tempering_ess, f.tempering_stages,
+               f.global_density, f.roughening, f.global_search ? ", global search (likelihood field, ray-cast rerank)" : "");
   std::fflush(out);
   std::optional<GlobalResult> result;
   if (global) {

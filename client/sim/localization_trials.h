@@ -53,6 +53,8 @@ struct TrialSettings {
   double scan_period_s = 0.2;
   int recover_updates = 30;      // a recovery not within bounds by then failed; 0: no recovery
   LostDetectorOptions lost;
+  // The sensor model's short_beyond for every preset (sensor_model.h); negative: the preset's.
+  double short_beyond = -1;
 };
 
 // A global trial's outcome: within bounds and staying so to the last update, with one

@@ -3,10 +3,12 @@
 // RMAX 15 m. N peak = 1 / (sqrt(2 pi) 0.5) = 0.79788456..., uniform = 0.1 / 15.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
+#include "client/localization/particle_filter.h"
 #include "client/localization/sensor_model.h"
 
 namespace fleetmap::localization {
@@ -96,6 +98,61 @@ TEST(SensorModel, RejectsMeaninglessParameters) {
   o = {};
   o.rmax = -1;
   EXPECT_THROW(SensorModel{o}, std::invalid_argument);
+}
+
+TEST(SensorModel, ShortBeyondFlattensReadingsFarShorterThanExpected) {
+  SensorModelOptions o;
+  o.short_beyond = 0.5;
+  const SensorModel m(o);
+  const SensorModel seed;
+  // Up to 0.5 m short: eq. (5) as written; farther: the value at 0.5 m short.
+  EXPECT_EQ(m.likelihood(-0.3), seed.likelihood(-0.3));
+  for (double d : {-0.8, -2.0, -9.0}) EXPECT_NEAR(m.likelihood(d), seed.likelihood(-0.5), 1e-15) << d;
+  for (double d : {-0.8, -9.0}) EXPECT_NEAR(m.log_likelihood(d), std::log(seed.likelihood(-0.5)), 1e-12) << d;
+  // Longer than expected (through a wall): the full penalty.
+  EXPECT_EQ(m.likelihood(2.0), seed.likelihood(2.0));
+  // Eq. (6) sees the flattened beams too: deltas {0, -3} weigh as {0, -0.5}.
+  const std::vector<double> measured{5.0, 2.0}, synthetic{5.0, 5.0}, flat{5.0, 4.5};
+  EXPECT_NEAR(m.log_weight(measured.data(), synthetic.data(), 2), seed.log_weight(flat.data(), synthetic.data(), 2),
+              1e-12);
+  o.short_beyond = -1;
+  EXPECT_THROW(SensorModel{o}, std::invalid_argument);
+}
+
+// A wall across the view at x = 4 m seen from (x, 0) facing +x, and a crowd lined up
+// kCrowdGap metres in front of it that hides the beams within 40 degrees of the axis.
+constexpr double kWallX = 4.0, kCrowdGap = 1.0, kCrowdHalfAngle = 40 * kPi / 180, kRmax = 15.0;
+
+std::vector<double> wall_ranges(double x, const std::vector<double>& beams, bool crowd) {
+  std::vector<double> r;
+  for (double a : beams) {
+    const double to_wall = std::cos(a) > 0 ? (kWallX - x) / std::cos(a) : kRmax;
+    const double to_crowd = (kWallX - kCrowdGap - x) / std::cos(a);
+    r.push_back(std::min(kRmax, crowd && std::fabs(a) < kCrowdHalfAngle ? to_crowd : to_wall));
+  }
+  return r;
+}
+
+double crowd_score(const SensorModel& m, double pose_x) {
+  std::vector<double> beams;
+  for (int j = 0; j < 131; ++j) beams.push_back(-kPi / 2 + kPi * j / 130);
+  const std::vector<double> measured = wall_ranges(0.0, beams, true);  // the truth at x = 0
+  const std::vector<double> synthetic = wall_ranges(pose_x, beams, false);
+  return m.log_weight(measured.data(), synthetic.data(), beams.size());
+}
+
+TEST(SensorModel, PeopleInFrontOfAWallDoNotPullThePoseOntoThem) {
+  // The `fast` preset's model (fast_search()): the true pose
+  // must outscore one 0.3 m nearer the wall, which would put the wall where the crowd
+  // stands.
+  const SensorModel model(ParticleFilterOptions::fast_search().sensor);
+  EXPECT_GT(crowd_score(model, 0.0), crowd_score(model, 0.3));
+  // The same model without the flat short term lets the crowd decide: this is what the
+  // test guards against.
+  SensorModelOptions penalised = ParticleFilterOptions::fast_search().sensor;
+  penalised.short_beyond = 0;
+  const SensorModel before(penalised);
+  EXPECT_LT(crowd_score(before, 0.0), crowd_score(before, 0.3));
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // LaserSimulator (client/sim/laser_simulator.h): true ranges plus N(0, sigma_L),
-// RMAX kept for beams that hit nothing, people shortening contiguous beams.
+// RMAX kept for beams that hit nothing, people: walking discs that shorten the beams they meet.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -66,7 +67,7 @@ TEST(LaserSimulator, BeamsThatHitNothingReturnRmax) {
   EXPECT_NEAR(r[65], 3.0, 0.3);
 }
 
-TEST(LaserSimulator, PeopleShortenContiguousBeams) {
+TEST(LaserSimulator, PeopleShortenBeamsToTheirDiscs) {
   const auto world = room_caster();
   LaserSimulatorOptions o;
   o.sigma = 0;
@@ -82,11 +83,57 @@ TEST(LaserSimulator, PeopleShortenContiguousBeams) {
       if (r[j] < truth[j] - 1e-9) {
         ++shorter;
         EXPECT_GE(r[j], 0.5);  // min_person_range
+        // The reading ends on a person's edge.
+        const Point hit = p.point() + r[j] * ray_direction(p.theta + laser.beam_angles()[j]);
+        double nearest_edge = INFINITY;
+        for (const Person& person : laser.people())
+          nearest_edge = std::min(nearest_edge, std::fabs(distance(hit, person.centre) - person.radius));
+        EXPECT_LT(nearest_edge, 1e-6) << "beam " << j;
       }
     }
   }
-  // A person 0.5 m wide covers at least one beam (1.4 degrees apart) even at 10 m.
+  // A person 0.4-0.6 m wide covers at least one beam (1.4 degrees apart) even at 15 m.
   EXPECT_GT(shorter, 150);
+}
+
+TEST(LaserSimulator, PeopleAreHumanSizedInViewClearOfWallsAndWalk) {
+  // Realistic people (docs/localization.md "People in the scans"): 0.4-0.6 m across,
+  // in the field of view within the laser's range, never inside or against a wall, and
+  // walking from scan to scan rather than jumping.
+  const auto world = room_caster();
+  LaserSimulatorOptions o;
+  o.people = 10;
+  LaserSimulator laser(world, o, 5);
+  Pose robot{3, 8, 0};
+  std::vector<Person> before;
+  int walked = 0, compared = 0;
+  for (int k = 0; k < 100; ++k) {
+    robot = {3 + 0.1 * k, 8, 0.02 * k};  // driving and turning slowly
+    laser.scan(robot);
+    const std::vector<Person>& people = laser.people();
+    ASSERT_EQ(people.size(), 10u);
+    for (size_t i = 0; i < people.size(); ++i) {
+      const Person& q = people[i];
+      if (!(q.radius > 0)) continue;
+      EXPECT_GE(2 * q.radius, 0.4 - 1e-12);
+      EXPECT_LE(2 * q.radius, 0.6 + 1e-12);
+      const Point rel = q.centre - robot.point();
+      EXPECT_LE(norm(rel) + q.radius, 15.0);
+      EXPECT_GE(norm(rel) - q.radius, 0.5);
+      EXPECT_LE(std::fabs(angle_diff(std::atan2(rel.y, rel.x), robot.theta)), kPi / 2 + 1e-9);
+      for (int a = 0; a < 36; ++a) EXPECT_GE(world->cast(q.centre, a * kPi / 18), q.radius) << "inside a wall";
+      EXPECT_NEAR(norm(q.velocity), 1.0, 1e-9);
+      if (!before.empty() && before[i].radius == q.radius) {  // the same person, not placed again
+        const double moved = distance(before[i].centre, q.centre);
+        EXPECT_TRUE(moved < 1e-12 || std::fabs(moved - 0.2) < 1e-9) << moved;  // 1 m/s for 0.2 s, or turning
+        ++compared;
+        walked += moved > 0.1;
+      }
+    }
+    before = people;
+  }
+  EXPECT_GT(compared, 500);
+  EXPECT_GT(walked, compared / 2);
 }
 
 }  // namespace
