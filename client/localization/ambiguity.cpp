@@ -1,5 +1,6 @@
 #include "client/localization/ambiguity.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
@@ -10,11 +11,20 @@ namespace {
 
 uint64_t key(int64_t x, int64_t y) { return (static_cast<uint64_t>(x) << 32) ^ (static_cast<uint64_t>(y) & 0xffffffffu); }
 
-}  // namespace
+struct PlaceCandidate {
+  Pose mean;
+  double share = 0;               // of the total weight
+  std::vector<size_t> heaviest;   // its heaviest particles, heaviest first
+};
 
-Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<double>& weights,
-                         const AmbiguityOptions& o) {
-  Ambiguity out;
+struct PlaceCandidates {
+  std::vector<PlaceCandidate> list;  // heaviest first
+  double covered = 0;           // share of the weight in every cluster taken
+};
+
+PlaceCandidates find_candidates(const std::vector<Pose>& poses, const std::vector<double>& weights,
+                           const AmbiguityOptions& o, size_t keep_heaviest) {
+  PlaceCandidates out;
   const size_t n = std::min(poses.size(), weights.size());
   double total = 0;
   for (size_t i = 0; i < n; ++i) total += weights[i];
@@ -32,7 +42,7 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
   // looks at what is left. The rounds are capped: a nearly uniform cloud (just after
   // init_global) has thousands of comparable blocks, and is ambiguous after a few.
   constexpr size_t kMaxRounds = 64;
-  for (size_t round = 0; round < kMaxRounds && out.places.size() < o.max_places; ++round) {
+  for (size_t round = 0; round < kMaxRounds && out.list.size() < o.max_places; ++round) {
     double best = 0;
     std::pair<int64_t, int64_t> centre{};
     for (size_t i = 0; i < n; ++i) {
@@ -50,10 +60,12 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
     }
     if (!(best > 0) || best < o.min_ratio * heaviest) break;  // nothing comparable is left
     double w = 0, x = 0, y = 0, c = 0, s = 0;
+    std::vector<size_t> members;
     for (size_t i = 0; i < n; ++i) {
       if (taken[i] || std::abs(cell[i].first - centre.first) > 1 || std::abs(cell[i].second - centre.second) > 1)
         continue;
       taken[i] = true;
+      members.push_back(i);
       w += weights[i];
       x += weights[i] * poses[i].x;
       y += weights[i] * poses[i].y;
@@ -62,14 +74,64 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
     }
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy) mass.erase(key(centre.first + dx, centre.second + dy));
+    out.covered += w / total;
     if (heaviest == 0) heaviest = w;
     const Pose mean{x / w, y / w, std::atan2(s, c)};
     bool apart = true;
-    for (const Pose& p : out.places) apart = apart && distance(p, mean) > o.min_separation;
+    for (const PlaceCandidate& p : out.list) apart = apart && distance(p.mean, mean) > o.min_separation;
     if (!apart) continue;
-    out.places.push_back(mean);
-    out.weights.push_back(w / total);
+    const size_t k = std::min(keep_heaviest, members.size());
+    std::partial_sort(members.begin(), members.begin() + static_cast<std::ptrdiff_t>(k), members.end(),
+                      [&](size_t a, size_t b) { return weights[a] > weights[b]; });
+    members.resize(k);
+    out.list.push_back({mean, w / total, std::move(members)});
   }
+  return out;
+}
+
+Ambiguity all_places(const PlaceCandidates& c) {
+  Ambiguity out;
+  for (const PlaceCandidate& p : c.list) {
+    out.places.push_back(p.mean);
+    out.weights.push_back(p.share);
+  }
+  return out;
+}
+
+}  // namespace
+
+Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<double>& weights,
+                         const AmbiguityOptions& o) {
+  return all_places(find_candidates(poses, weights, o, 0));
+}
+
+Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<double>& weights,
+                         const AmbiguityOptions& o, const PlaceScore& score) {
+  const PlaceCandidates c = find_candidates(poses, weights, o, o.refine);
+  // One candidate: nothing to compare. A diffuse cloud: the candidates are a sample of
+  // many comparable lumps, and the best of them says nothing about the rest.
+  if (c.list.size() < 2 || c.covered < o.diffuse_share) return all_places(c);
+  // Each candidate at its best pose: a cluster's mean may sit a little off the pose its
+  // best particles found, and 0.1 m off costs more per beam than a look-alike place.
+  std::vector<double> ll;
+  for (const PlaceCandidate& p : c.list) {
+    double best = score(p.mean);
+    for (size_t i : p.heaviest) best = std::max(best, score(poses[i]));
+    ll.push_back(best);
+  }
+  std::vector<double> sorted = ll;
+  std::sort(sorted.begin(), sorted.end(), std::greater<>());
+  const double best = sorted[0];
+  Ambiguity out;
+  out.runner_up_gap = best - sorted[1];
+  out.heaviest_gap = best - ll[0];
+  for (size_t k = 0; k < c.list.size(); ++k) {
+    if (k > 0 && !(ll[k] >= best - o.margin_per_beam)) continue;
+    out.places.push_back(c.list[k].mean);
+    out.weights.push_back(c.list[k].share);
+  }
+  // The heaviest explains the scans worse than the best place: that one stays beside it
+  // (it is within the margin of itself), so the verdict is ambiguous.
   return out;
 }
 

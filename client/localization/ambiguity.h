@@ -1,37 +1,76 @@
 #pragma once
 // Ambiguity of a particle set: where places look genuinely alike (identical rooms, a row
-// of identical doors), the cloud holds several clusters of comparable weight, and the
-// heaviest one is a coin toss. The filter must say so rather than report it as the pose.
+// of identical doors), the cloud holds several places, and the heaviest one is a coin
+// toss. The filter must say so rather than report it as the pose.
 //
-// Clusters as PoseEstimate::pose's (particle_filter.h): cells of `cell` metres, a
-// cluster the 3 x 3 block of cells holding the most weight. The heaviest is taken, its
-// cells removed, and the next heaviest block of what is left is taken again, and so on.
-// A cluster counts as a place when it holds at least min_ratio of the heaviest's weight
-// and its mean is more than min_separation from every place already taken (farther than
-// the 0.3 m bounds of a localization and a converged cloud's 0.5 m spread); two places or
-// more: ambiguous.
+// Candidate places, as PoseEstimate::pose's cluster (particle_filter.h): cells of `cell`
+// metres, a cluster the 3 x 3 block of cells holding the most weight. The heaviest is
+// taken, its cells removed, and the next heaviest block of what is left is taken again,
+// and so on. A cluster is a candidate when it holds at least min_ratio of the heaviest's
+// weight and its mean is more than min_separation from every candidate already taken
+// (farther than the 0.3 m bounds of a localization and a converged cloud's 0.5 m spread).
+//
+// Two rules decide which candidates are places (two places or more: ambiguous):
+//  * Weight (the first rule): every candidate is a place. A weight share reflects the
+//    resampling's drift as much as the evidence (in two identical rooms one room's share
+//    fell from 0.56 to 0.21 in 8 updates), so a tenth had to count, and on maps with
+//    merely similar places (offices, a hall of pillars) a lucky lump of a tenth made
+//    trials ambiguous whose heaviest place was right.
+//  * Likelihood (the default): the recent scans are scored with the sensor model from
+//    each candidate (its mean and its `refine` heaviest particles, the best of them),
+//    as a mean log-likelihood per beam, so the margin does not depend on the number of
+//    beams or scans. The places are the heaviest candidate (what estimate() reports) and
+//    every candidate within margin_per_beam of the best: identical places score alike
+//    and stay; a place that explains the scans worse goes, whatever its weight; a
+//    heaviest place that explains them worse than another is kept beside it (the
+//    weight and the scans disagree: ambiguous). A diffuse cloud (the candidates
+//    holding less than diffuse_share of the weight, e.g. just after init_global) is
+//    ambiguous whatever the scans say.
 #include <cstddef>
+#include <functional>
+#include <limits>
 #include <vector>
 
 #include "client/localization/pose.h"
 
 namespace fleetmap::localization {
 
+enum class AmbiguityRule { Weight, Likelihood };
+
 struct AmbiguityOptions {
+  AmbiguityRule rule = AmbiguityRule::Likelihood;
   double cell = 1.0;            // metres (ParticleFilterOptions::cluster_cell)
-  double min_ratio = 0.1;       // of the heaviest cluster's weight
+  double min_ratio = 0.1;       // of the heaviest cluster's weight, for a candidate
   double min_separation = 1.0;  // metres between cluster means
-  size_t max_places = 8;        // places listed at most
+  size_t max_places = 8;        // candidates taken at most
+  // Likelihood rule. margin_per_beam: chosen on seed 2032's fast trials (docs/localization.md):
+  // above every gap of a trial whose heaviest place was wrong yet the best (0.034).
+  double margin_per_beam = 0.04;  // log-likelihood per beam
+  size_t scans = 10;              // recent scans scored: a look around's and the first steps
+  size_t refine = 4;              // heaviest particles of a candidate scored beside its mean
+  double diffuse_share = 0.5;     // of the total weight held by the candidates
 };
 
 struct Ambiguity {
   bool ambiguous() const { return places.size() >= 2; }
   std::vector<Pose> places;      // cluster means (circular mean heading), heaviest first
   std::vector<double> weights;   // their shares of the total weight
+  // Likelihood rule, when two candidates or more were scored (else NaN): per beam, the
+  // best candidate's log-likelihood minus the next best's, and minus the heaviest's.
+  double runner_up_gap = std::numeric_limits<double>::quiet_NaN();
+  double heaviest_gap = std::numeric_limits<double>::quiet_NaN();
 };
 
-// Weights need not be normalized; empty or all-zero sets give no place.
+// The mean log-likelihood per beam of the recent scans seen from a pose (the latest
+// scan's pose; ParticleFilter::ambiguity builds it from its scans and sensor model).
+using PlaceScore = std::function<double(const Pose&)>;
+
+// Weights need not be normalized; empty or all-zero sets give no place. The Weight rule
+// (options.rule is not read).
 Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<double>& weights,
                          const AmbiguityOptions& options = {});
+// The Likelihood rule with the given score (options.rule is not read).
+Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<double>& weights,
+                         const AmbiguityOptions& options, const PlaceScore& score);
 
 }  // namespace fleetmap::localization

@@ -145,6 +145,8 @@ void ParticleFilter::init_global(std::optional<double> compass) {
   looking_around_ = true;
   since_scan_ = {};
   history_.clear();
+  recent_.clear();
+  since_recent_ = {};
 }
 
 Odometry ParticleFilter::stitching_step(const Scan& before, const Scan& after) const {
@@ -222,6 +224,8 @@ void ParticleFilter::init_pose(const Pose& pose, double sd_xy, double sd_theta) 
   const size_t n = options_.particles;
   poses_.resize(n);
   global_phase_ = false;
+  recent_.clear();
+  since_recent_ = {};
   std::normal_distribution<double> n01(0.0, 1.0);
   for (Pose& p : poses_)
     p = {pose.x + sd_xy * n01(rng_), pose.y + sd_xy * n01(rng_), normalize_angle(pose.theta + sd_theta * n01(rng_))};
@@ -240,6 +244,10 @@ void ParticleFilter::set_particles(std::vector<Pose> poses, std::vector<double> 
 }
 
 void ParticleFilter::predict(const Odometry& odometry) {
+  {
+    const Pose p = compose(compose(Pose{}, since_recent_), odometry);
+    since_recent_ = {p.x, p.y, p.theta};
+  }
   if (global_phase_) {  // the stitched scans need the odometry between them
     const Pose p = compose(compose(Pose{}, since_scan_), odometry);
     since_scan_ = {p.x, p.y, p.theta};
@@ -256,6 +264,11 @@ void ParticleFilter::update(const std::vector<double>& ranges, std::optional<dou
                                 " beams, got " + std::to_string(ranges.size()));
   if (poses_.empty()) throw std::logic_error("ParticleFilter::update: no particles (call init_global or init_pose)");
   searched_at_.clear();
+  if (options_.ambiguity.scans > 0) {
+    if (recent_.size() >= options_.ambiguity.scans) recent_.erase(recent_.begin());
+    recent_.push_back({since_recent_, ranges, compass});
+    since_recent_ = {};
+  }
   if (global_phase_) {
     // Whether the robot is looking around is known from the motion since the last scan.
     if (!history_.empty() && motion_.decompose(since_scan_).trans >= options_.turn_in_place) looking_around_ = false;
@@ -424,6 +437,28 @@ void ParticleFilter::roughen() {
       p = {p.x + sx * n01(rng), p.y + sy * n01(rng), normalize_angle(p.theta + st * n01(rng))};
     }
   });
+}
+
+Ambiguity ParticleFilter::ambiguity(AmbiguityRule rule) const {
+  if (rule == AmbiguityRule::Weight || recent_.empty()) return find_ambiguity(poses_, weights_, options_.ambiguity);
+  // Each recent scan from a place: at the place composed with the motion from the latest
+  // scan back to that one, stitched as for the global search (a look around's turns
+  // from odometry alone would misplace its earlier scans by degrees).
+  std::vector<Pose> at{Pose{}};
+  for (size_t k = 1; k < recent_.size(); ++k) at.push_back(compose(at.back(), stitching_step(recent_[k - 1], recent_[k])));
+  std::vector<Odometry> back;
+  for (const Pose& p : at) back.push_back(between(at.back(), p));
+  std::vector<double> synthetic(beams_.size());
+  const PlaceScore score = [&](const Pose& place) {
+    double ll = 0;
+    for (size_t k = 0; k < recent_.size(); ++k) {
+      const Pose p = compose(place, back[k]);
+      caster_->cast_scan(p.point(), p.theta, beams_, synthetic.data());
+      ll += sensor_.log_weight(recent_[k].ranges.data(), synthetic.data(), beams_.size());
+    }
+    return ll / static_cast<double>(recent_.size() * beams_.size());
+  };
+  return find_ambiguity(poses_, weights_, options_.ambiguity, score);
 }
 
 PoseEstimate ParticleFilter::estimate() const {

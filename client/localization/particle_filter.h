@@ -179,9 +179,14 @@ class ParticleFilter {
   void update(const std::vector<double>& ranges, std::optional<double> compass = std::nullopt);
 
   PoseEstimate estimate() const;
-  // Whether the cloud holds two or more places of comparable weight (ambiguity.h): then
+  // Whether the cloud holds two or more places that explain the scans alike (ambiguity.h,
+  // options().ambiguity's rule; the Likelihood rule scores the last ambiguity.scans scans,
+  // placed as the global search stitches them (odometry, its turns corrected by the
+  // compass and in place by the scans), and falls back to the Weight rule before any
+  // scan): then
   // estimate().pose is one of look-alike places, not a pose to report.
-  Ambiguity ambiguity() const { return find_ambiguity(poses_, weights_, options_.ambiguity); }
+  Ambiguity ambiguity() const { return ambiguity(options_.ambiguity.rule); }
+  Ambiguity ambiguity(AmbiguityRule rule) const;
 
   const std::vector<Pose>& poses() const { return poses_; }
   const std::vector<double>& weights() const { return weights_; }  // normalized
@@ -240,6 +245,11 @@ class ParticleFilter {
   size_t searched_scans_ = 0;  // history_'s scans at the last search
   bool looking_around_ = false;  // only turns in place since init_global
   std::vector<Candidate> candidates_;
+  // The last ambiguity.scans scans (their odometry from the scan before and compass
+  // reading, as history_'s), for the ambiguity verdict; cleared by init_global and
+  // init_pose, kept by set_particles and set_map.
+  std::vector<Scan> recent_;
+  Odometry since_recent_;  // odometry since recent_'s last scan
   std::vector<Pose> poses_;
   std::vector<double> weights_;  // normalized, sum 1
   std::vector<double> log_likelihood_;  // of the last scan, per particle

@@ -59,7 +59,9 @@ struct GlobalRun {
   int converged_at = -1;  // first update whose estimate converged (PoseEstimate::converged); -1: none
   bool within = false;   // the last update's estimate within 0.3 m and 3 degrees
   double error = 0;      // metres, the last update's
-  size_t places = 0;     // of the last update's ambiguity verdict
+  size_t places = 0;     // of the last update's ambiguity verdict (the options' rule)
+  size_t places_weight_rule = 0;  // of the Weight rule's, on the same cloud
+  double runner_up_gap = NAN, heaviest_gap = NAN;  // the Likelihood rule's (ambiguity.h)
 };
 
 bool within_bounds(const Pose& e, const Pose& truth) {
@@ -99,7 +101,11 @@ GlobalRun run_global_localization(const Map& map, std::shared_ptr<const RayCaste
     if (e.converged && run.converged_at < 0) run.converged_at = u;
     if (stop_when_converged && e.converged) break;
   }
-  run.places = pf.ambiguity().places.size();
+  const Ambiguity a = pf.ambiguity();
+  run.places = a.places.size();
+  run.runner_up_gap = a.runner_up_gap;
+  run.heaviest_gap = a.heaviest_gap;
+  run.places_weight_rule = pf.ambiguity(AmbiguityRule::Weight).places.size();
   return run;
 }
 
@@ -130,12 +136,17 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
     g.updates = run.updates;
     g.within_from = run.first_within;
     g.places = run.places;
+    g.places_weight_rule = run.places_weight_rule;
+    g.runner_up_gap = run.runner_up_gap;
+    g.heaviest_gap = run.heaviest_gap;
     g.final_error = run.error;
     g.seconds = seconds_since(trial_t0);
     res.trial_seconds.push_back(g.seconds);
-    g.outcome = run.places >= 2 ? TrialOutcome::Ambiguous
-                : run.first_within > 0 ? TrialOutcome::Success
-                                       : TrialOutcome::Wrong;
+    const auto outcome = [&](size_t places) {
+      return places >= 2 ? TrialOutcome::Ambiguous : run.first_within > 0 ? TrialOutcome::Success : TrialOutcome::Wrong;
+    };
+    g.outcome = outcome(run.places);
+    g.outcome_weight_rule = outcome(run.places_weight_rule);
     ++res.trials;
     if (run.first_within > 0) {
       ++res.converged;
@@ -144,13 +155,19 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
     res.success += g.outcome == TrialOutcome::Success;
     res.ambiguous += g.outcome == TrialOutcome::Ambiguous;
     res.wrong += g.outcome == TrialOutcome::Wrong;
+    res.success_weight_rule += g.outcome_weight_rule == TrialOutcome::Success;
+    res.ambiguous_weight_rule += g.outcome_weight_rule == TrialOutcome::Ambiguous;
+    res.wrong_weight_rule += g.outcome_weight_rule == TrialOutcome::Wrong;
     res.final_error.push_back(run.error);
     res.per_trial.push_back(g);
     if (s.per_trial)
-      std::fprintf(s.per_trial, "  trial %d: start (%.2f, %.2f, %.1f deg): %s, %s, final error %.2f m, %zu place(s)\n", t,
-                   start.x, start.y, rad2deg(start.theta),
+      std::fprintf(s.per_trial,
+                   "  trial %d: start (%.2f, %.2f, %.1f deg): %s, %s, final error %.2f m, %zu place(s); weight rule %s, "
+                   "%zu place(s); gaps per beam: runner-up %.3f, heaviest %.3f\n",
+                   t, start.x, start.y, rad2deg(start.theta),
                    run.first_within > 0 ? ("within from update " + std::to_string(run.first_within)).c_str() : "not within",
-                   to_string(g.outcome), run.error, run.places);
+                   to_string(g.outcome), run.error, run.places, to_string(g.outcome_weight_rule), run.places_weight_rule,
+                   run.runner_up_gap, run.heaviest_gap);
   }
   res.seconds = seconds_since(t0);
   return res;
@@ -402,8 +419,11 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
                  percentile(g.first_within, 0.5), percentile(g.first_within, 0.9),
                  errs.empty() ? NAN : errs[errs.size() / 2], g.seconds / std::max(1, g.trials), s.updates,
                  setup);
-    std::fprintf(out, "  outcome: success %d, ambiguous %d (the filter says it cannot tell), wrong %d of %d\n", g.success,
-                 g.ambiguous, g.wrong, g.trials);
+    std::fprintf(out,
+                 "  outcome: success %d, ambiguous %d (the filter says it cannot tell), wrong %d of %d; weight rule "
+                 "(ambiguity.h) on the same trials: success %d, ambiguous %d, wrong %d\n",
+                 g.success, g.ambiguous, g.wrong, g.trials, g.success_weight_rule, g.ambiguous_weight_rule,
+                 g.wrong_weight_rule);
     std::fflush(out);
   }
   if (tracking) {
@@ -443,28 +463,32 @@ double percentile_of(std::vector<double> v, double q) {
 }  // namespace
 
 void print_table(std::FILE* out, const std::vector<TableRow>& rows) {
-  std::fprintf(out, "\n| map | config | trials | success | ambiguous | wrong | within, no verdict | time p50 | time p95 |\n"
-                    "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+  std::fprintf(out, "\n| map | config | trials | success | ambiguous | wrong | weight rule: success / ambiguous / wrong "
+                    "| within, no verdict | time p50 | time p95 |\n"
+                    "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
   for (const TableRow& r : rows) {
     const GlobalResult& g = r.result;
     std::vector<double> seconds;
     for (const GlobalTrial& t : g.per_trial) seconds.push_back(t.seconds);
     const double n = std::max(1, g.trials);
-    std::fprintf(out, "| %s | %s | %d | %.1f %% | %.1f %% | %.1f %% | %.1f %% | %.2f s | %.2f s |\n", r.map.c_str(),
-                 r.config.c_str(), g.trials, 100.0 * g.success / n, 100.0 * g.ambiguous / n, 100.0 * g.wrong / n,
-                 100.0 * g.converged / n, percentile_of(seconds, 0.5), percentile_of(seconds, 0.95));
+    std::fprintf(out, "| %s | %s | %d | %.1f %% | %.1f %% | %.1f %% | %.1f / %.1f / %.1f %% | %.1f %% | %.2f s | %.2f s |\n",
+                 r.map.c_str(), r.config.c_str(), g.trials, 100.0 * g.success / n, 100.0 * g.ambiguous / n,
+                 100.0 * g.wrong / n, 100.0 * g.success_weight_rule / n, 100.0 * g.ambiguous_weight_rule / n,
+                 100.0 * g.wrong_weight_rule / n, 100.0 * g.converged / n, percentile_of(seconds, 0.5),
+                 percentile_of(seconds, 0.95));
   }
   std::fflush(out);
 }
 
 void write_trials_csv(std::FILE* out, const std::vector<TableRow>& rows, uint64_t seed) {
   std::fprintf(out, "map,config,seed,trial,start_x,start_y,start_theta_deg,outcome,updates,within_from,places,"
-                    "final_error_m,seconds\n");
+                    "final_error_m,seconds,outcome_weight_rule,places_weight_rule,runner_up_gap,heaviest_gap\n");
   for (const TableRow& r : rows)
     for (const GlobalTrial& t : r.result.per_trial)
-      std::fprintf(out, "%s,%s,%llu,%d,%.3f,%.3f,%.2f,%s,%d,%d,%zu,%.3f,%.3f\n", r.map.c_str(), r.config.c_str(),
-                   static_cast<unsigned long long>(seed), t.trial, t.start.x, t.start.y, rad2deg(t.start.theta),
-                   to_string(t.outcome), t.updates, t.within_from, t.places, t.final_error, t.seconds);
+      std::fprintf(out, "%s,%s,%llu,%d,%.3f,%.3f,%.2f,%s,%d,%d,%zu,%.3f,%.3f,%s,%zu,%.4f,%.4f\n", r.map.c_str(),
+                   r.config.c_str(), static_cast<unsigned long long>(seed), t.trial, t.start.x, t.start.y,
+                   rad2deg(t.start.theta), to_string(t.outcome), t.updates, t.within_from, t.places, t.final_error,
+                   t.seconds, to_string(t.outcome_weight_rule), t.places_weight_rule, t.runner_up_gap, t.heaviest_gap);
 }
 
 }  // namespace fleetmap::localization

@@ -71,6 +71,11 @@ struct GlobalTrial {
   int updates = 0;         // updates made
   int within_from = -1;    // update from which the estimate stayed within bounds; -1: not within at the end
   size_t places = 0;       // places of the ambiguity verdict at the last update
+  // The Weight rule's verdict on the same cloud (ambiguity.h), for comparison, and the
+  // Likelihood rule's gaps per beam (NaN: fewer than two candidates scored).
+  TrialOutcome outcome_weight_rule = TrialOutcome::Wrong;
+  size_t places_weight_rule = 0;
+  double runner_up_gap = 0, heaviest_gap = 0;
   double final_error = 0;  // metres
   double seconds = 0;      // computation of this localization
 };
@@ -79,6 +84,7 @@ struct GlobalResult {
   // converged: within bounds at the end, whether or not ambiguous (the figure before the
   // ambiguity verdict); success + ambiguous + wrong = trials.
   int trials = 0, converged = 0, success = 0, ambiguous = 0, wrong = 0;
+  int success_weight_rule = 0, ambiguous_weight_rule = 0, wrong_weight_rule = 0;  // ambiguity.h's Weight rule
   std::vector<GlobalTrial> per_trial;
   std::vector<int> first_within;    // update at which the estimate first got within bounds
   std::vector<double> final_error;  // metres, per trial

@@ -1,6 +1,8 @@
-// The ambiguity verdict (client/localization/ambiguity.h): on particle sets built by hand,
-// and on the filter itself in two identical rooms (must say ambiguous, both rooms) and
-// in two rooms that differ by one wall (must not, and name the true room).
+// The ambiguity verdict (client/localization/ambiguity.h): on particle sets built by hand
+// (the Weight rule's candidates; the Likelihood rule with scores given by hand), and on
+// the filter itself in two identical rooms (must say ambiguous, both rooms), in two rooms
+// that differ by one wall (must not, and name the true room), and on a cloud split evenly
+// between those two rooms (the Weight rule says ambiguous, the scans say the true room).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -64,6 +66,82 @@ TEST(Ambiguity, OneCloudAcrossCellBordersIsOnePlace) {
 TEST(Ambiguity, EmptyOrWeightlessSetsHaveNoPlace) {
   EXPECT_TRUE(find_ambiguity({}, {}).places.empty());
   EXPECT_TRUE(find_ambiguity({{1, 1, 0}, {9, 9, 0}}, {0.0, 0.0}).places.empty());
+  EXPECT_TRUE(find_ambiguity({}, {}, {}, [](const Pose&) { return 0.0; }).places.empty());
+}
+
+// Scores by hand: -0.2 per beam near x = 3.2 (the scans fit there), `elsewhere` away.
+PlaceScore score_fitting_at_a(double elsewhere) {
+  return [elsewhere](const Pose& p) { return std::fabs(p.x - 3.2) < 0.5 ? -0.2 : elsewhere; };
+}
+
+TEST(AmbiguityByLikelihood, AHeavySecondPlaceThatExplainsTheScansWorseIsNot) {
+  // About equal weights, so the Weight rule says ambiguous; B is worse by 0.5 per beam
+  // (a wall of the scans missing there), far beyond the margin.
+  std::vector<Pose> p;
+  std::vector<double> w;
+  add_cluster(p, w, {3.2, 2.1, 0}, 0.52, 50);
+  add_cluster(p, w, {18.2, 2.1, 0}, 0.48, 50);
+  ASSERT_TRUE(find_ambiguity(p, w).ambiguous());
+  const Ambiguity a = find_ambiguity(p, w, {}, score_fitting_at_a(-0.7));
+  EXPECT_FALSE(a.ambiguous());
+  ASSERT_EQ(a.places.size(), 1u);
+  EXPECT_NEAR(a.places[0].x, 3.2, 0.05);
+  EXPECT_NEAR(a.runner_up_gap, 0.5, 1e-9);
+}
+
+TEST(AmbiguityByLikelihood, PlacesThatExplainTheScansAlikeAreAmbiguous) {
+  // B far lighter (a fifth of A), but within the margin of A's score: both stay.
+  std::vector<Pose> p;
+  std::vector<double> w;
+  add_cluster(p, w, {3.2, 2.1, 0}, 0.8, 50);
+  add_cluster(p, w, {18.2, 2.1, 0}, 0.2, 50);
+  AmbiguityOptions o;
+  const Ambiguity a = find_ambiguity(p, w, o, score_fitting_at_a(-0.2 - o.margin_per_beam / 2));
+  ASSERT_TRUE(a.ambiguous());
+  EXPECT_NEAR(a.places[1].x, 18.2, 0.05);
+  // Just beyond the margin: B goes.
+  EXPECT_FALSE(find_ambiguity(p, w, o, score_fitting_at_a(-0.2 - o.margin_per_beam * 1.5)).ambiguous());
+}
+
+TEST(AmbiguityByLikelihood, AHeaviestPlaceThatExplainsTheScansWorseIsKeptBesideTheBest) {
+  // The weight says B, the scans say A: the filter's estimate (B) cannot be reported.
+  std::vector<Pose> p;
+  std::vector<double> w;
+  add_cluster(p, w, {18.2, 2.1, 0}, 0.7, 50);
+  add_cluster(p, w, {3.2, 2.1, 0}, 0.3, 50);
+  const Ambiguity a = find_ambiguity(p, w, {}, score_fitting_at_a(-0.7));
+  ASSERT_EQ(a.places.size(), 2u);
+  EXPECT_NEAR(a.places[0].x, 18.2, 0.05);
+  EXPECT_NEAR(a.places[1].x, 3.2, 0.05);
+  EXPECT_NEAR(a.heaviest_gap, 0.5, 1e-9);
+}
+
+TEST(AmbiguityByLikelihood, APlaceIsScoredAtItsBestParticle) {
+  // B's mean sits 0.5 m off the pose that fits; one of its heaviest particles is on it.
+  std::vector<Pose> p;
+  std::vector<double> w;
+  add_cluster(p, w, {10.0, 2.1, 0}, 0.55, 50);
+  add_cluster(p, w, {17.0, 2.1, 0}, 0.4, 50);
+  p.push_back({16.7, 2.1, 0});
+  w.push_back(0.05);
+  const PlaceScore score = [](const Pose& q) {
+    return std::fabs(q.x - 16.7) < 0.05 ? -0.2 : std::fabs(q.x - 10.0) < 0.5 ? -0.21 : -1.0;
+  };
+  EXPECT_TRUE(find_ambiguity(p, w, {}, score).ambiguous());
+  AmbiguityOptions mean_only;
+  mean_only.refine = 0;
+  EXPECT_FALSE(find_ambiguity(p, w, mean_only, score).ambiguous());
+}
+
+TEST(AmbiguityByLikelihood, ADiffuseCloudIsAmbiguousWhateverTheScores) {
+  // 400 equal particles on a 20 m x 20 m grid (a cloud just after init_global).
+  std::vector<Pose> p;
+  std::vector<double> w;
+  for (int i = 0; i < 400; ++i) {
+    p.push_back({0.5 + i % 20, 0.5 + i / 20, 0});
+    w.push_back(1);
+  }
+  EXPECT_TRUE(find_ambiguity(p, w, {}, [](const Pose& q) { return q.x < 3 ? 0.0 : -5.0; }).ambiguous());
 }
 
 // Two closed 8 m x 6 m rooms, 4 m apart along x; each holds an L-shaped wall and a short
@@ -91,25 +169,25 @@ Map two_rooms(bool same) {
 }
 
 // Global localization (robust preset, uniform cloud, compass) in room A for 8 updates.
-Ambiguity localize_in_room_a(const Map& m, Pose& truth) {
+std::unique_ptr<ParticleFilter> localize_in_room_a(const Map& m, Pose& truth) {
   const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
   LaserSimulator laser(world, {}, 21);
   WanderDriver driver(world, {5.5, 1.5, 0.4}, {}, 22);
   ParticleFilterOptions o = ParticleFilterOptions::robust();
   o.particles = 4000;
   o.seed = 23;
-  ParticleFilter f(m, o);
+  auto f = std::make_unique<ParticleFilter>(m, o);
   truth = driver.pose();
-  f.init_global(truth.theta);
+  f->init_global(truth.theta);
   for (int u = 1; u <= 8; ++u) {
     if (u > 1) {
       const DriveStep s = driver.step();
       truth = s.truth;
-      f.predict(s.odometry);
+      f->predict(s.odometry);
     }
-    f.update(laser.scan(truth), truth.theta);
+    f->update(laser.scan(truth), truth.theta);
   }
-  return f.ambiguity();
+  return f;
 }
 
 // The filter drifts towards one of identical rooms (the weight of room A fell from 0.56
@@ -117,7 +195,7 @@ Ambiguity localize_in_room_a(const Map& m, Pose& truth) {
 // true relative pose wins each scan), so "comparable" is a tenth, not a half.
 TEST(Ambiguity, IdenticalRoomsAreAmbiguous) {
   Pose truth;
-  const Ambiguity a = localize_in_room_a(two_rooms(true), truth);
+  const Ambiguity a = localize_in_room_a(two_rooms(true), truth)->ambiguity();
   ASSERT_TRUE(a.ambiguous());
   // The two places are the truth and its copy in room B, not two lumps of one room.
   bool at_truth = false, at_copy = false;
@@ -131,10 +209,40 @@ TEST(Ambiguity, IdenticalRoomsAreAmbiguous) {
 
 TEST(Ambiguity, RoomsThatDifferAreNot) {
   Pose truth;
-  const Ambiguity a = localize_in_room_a(two_rooms(false), truth);
+  const Ambiguity a = localize_in_room_a(two_rooms(false), truth)->ambiguity();
   EXPECT_FALSE(a.ambiguous());
   ASSERT_FALSE(a.places.empty());
   EXPECT_LT(distance(a.places[0], truth), 0.3);
+}
+
+// The weight share is not the evidence: the filter's cloud replaced by one split evenly
+// between the truth and its copy in room B (B's short wall elsewhere). The Weight rule
+// calls it ambiguous; the last scans, seen from B, miss the short wall: one place, the
+// true one.
+TEST(Ambiguity, AnEvenSplitBetweenRoomsThatDifferIsNot) {
+  Pose truth;
+  const auto f = localize_in_room_a(two_rooms(false), truth);
+  const Pose copy{truth.x + 12, truth.y, truth.theta};
+  const auto split = [&](double at_truth) {
+    std::vector<Pose> p;
+    std::vector<double> w;
+    add_cluster(p, w, truth, at_truth, 50);
+    add_cluster(p, w, copy, 1 - at_truth, 50);
+    f->set_particles(p, w);
+  };
+  split(0.55);
+  ASSERT_TRUE(f->ambiguity(AmbiguityRule::Weight).ambiguous());
+  const Ambiguity a = f->ambiguity();
+  EXPECT_FALSE(a.ambiguous());
+  ASSERT_EQ(a.places.size(), 1u);
+  EXPECT_LT(distance(a.places[0], truth), 0.3);
+  EXPECT_GT(a.runner_up_gap, f->options().ambiguity.margin_per_beam);
+  // The copy heavier: the weight and the scans disagree; both kept, the truth second.
+  split(0.45);
+  const Ambiguity b = f->ambiguity();
+  ASSERT_EQ(b.places.size(), 2u);
+  EXPECT_LT(distance(b.places[0], copy), 0.3);
+  EXPECT_LT(distance(b.places[1], truth), 0.3);
 }
 
 }  // namespace
