@@ -53,11 +53,7 @@ positive_int bench-cluster.sh --phase-seconds "$PHASE_S"
 positive_int bench-cluster.sh --commits "$COMMITS"
 need_bins bench-cluster.sh fleetmap fleetmap-server galera_robot_fleet
 
-export FLEETMAP_CLUSTER_HOME="${FLEETMAP_CLUSTER_HOME:-$ROOT/build/bench-cluster}"
-export FLEETMAP_CLUSTER_PORT="${FLEETMAP_CLUSTER_PORT:-33406}"
-export FLEETMAP_CLUSTER_MYSQLD_ARGS="${FLEETMAP_CLUSTER_MYSQLD_ARGS:---innodb-buffer-pool-size=64M --innodb-log-file-size=32M}"
-unset FLEETMAP_CONFIG FLEETMAP_HOST FLEETMAP_PORT FLEETMAP_SOCKET FLEETMAP_DB FLEETMAP_USER FLEETMAP_PASSWORD FLEETMAP_HOSTS
-P="$FLEETMAP_CLUSTER_PORT"
+cluster_env "$ROOT/build/bench-cluster"
 FLOOR_PORT="${FLEETMAP_BENCH_PORT:-$((P + 400))}"
 FLOOR_HOME="$FLEETMAP_CLUSTER_HOME/floor"
 W="$FLEETMAP_CLUSTER_HOME/bench"

@@ -43,11 +43,7 @@ done
 positive_int chaos-cluster.sh --robots "$ROBOTS"
 need_bins chaos-cluster.sh fleetmap fleetmap-server galera_robot_fleet
 
-export FLEETMAP_CLUSTER_HOME="${FLEETMAP_CLUSTER_HOME:-$ROOT/.fleetmap-chaos}"
-export FLEETMAP_CLUSTER_PORT="${FLEETMAP_CLUSTER_PORT:-33406}"
-export FLEETMAP_CLUSTER_MYSQLD_ARGS="${FLEETMAP_CLUSTER_MYSQLD_ARGS:---innodb-buffer-pool-size=64M --innodb-log-file-size=32M}"
-unset FLEETMAP_CONFIG FLEETMAP_HOST FLEETMAP_PORT FLEETMAP_SOCKET FLEETMAP_DB FLEETMAP_USER FLEETMAP_PASSWORD FLEETMAP_HOSTS
-P="$FLEETMAP_CLUSTER_PORT"
+cluster_env "$ROOT/.fleetmap-chaos"
 W="$FLEETMAP_CLUSTER_HOME/chaos"
 RC=0
 

@@ -17,6 +17,15 @@ need_bins() {  # need_bins DRIVER PROGRAM...: each must be built
   done
 }
 
+cluster_env() {  # cluster_env HOME: the cluster under HOME unless FLEETMAP_CLUSTER_HOME says where
+  # Small buffers so that three nodes start fast; none of the caller's connection settings.
+  export FLEETMAP_CLUSTER_HOME="${FLEETMAP_CLUSTER_HOME:-$1}"
+  export FLEETMAP_CLUSTER_PORT="${FLEETMAP_CLUSTER_PORT:-33406}"
+  export FLEETMAP_CLUSTER_MYSQLD_ARGS="${FLEETMAP_CLUSTER_MYSQLD_ARGS:---innodb-buffer-pool-size=64M --innodb-log-file-size=32M}"
+  unset FLEETMAP_CONFIG FLEETMAP_HOST FLEETMAP_PORT FLEETMAP_SOCKET FLEETMAP_DB FLEETMAP_USER FLEETMAP_PASSWORD FLEETMAP_HOSTS
+  P="$FLEETMAP_CLUSTER_PORT"
+}
+
 positive_int() {  # positive_int DRIVER OPTION VALUE
   [[ "$3" =~ ^[1-9][0-9]*$ ]] || { echo "$1: $2 expects a positive whole number, got '$3'" >&2; exit 64; }
 }
