@@ -19,7 +19,8 @@ size_t delete_older(mysqlpp::Connection& c, const char* table, const std::string
 }  // namespace
 
 HistoryDeleted delete_history_before(mysqlpp::Connection& c, double keep_s, size_t batch) {
-  if (!(keep_s > 0) || batch == 0) return {};
+  // Beyond a millennium nothing is that old, and the cutoff in microseconds would overflow.
+  if (!(keep_s > 0) || keep_s > 3e10 || batch == 0) return {};
   // One cutoff for both tables, in the database's clock (the rows' t are its times).
   mysqlpp::Query q = c.query();
   q << "SELECT SYSDATE(6) - INTERVAL " << static_cast<long long>(std::llround(keep_s * 1e6)) << " MICROSECOND";

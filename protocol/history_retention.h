@@ -17,8 +17,8 @@ struct HistoryDeleted {
 };
 
 // Deletes the trajectory rows and GPS fixes older than keep_s seconds (by their time t,
-// against the database's clock), at most `batch` rows of each table. keep_s <= 0 deletes
-// nothing.
+// against the database's clock), at most `batch` rows of each table. keep_s <= 0 (or
+// beyond a thousand years) deletes nothing.
 HistoryDeleted delete_history_before(mysqlpp::Connection& c, double keep_s, size_t batch = 5000);
 
 }  // namespace fleetmap

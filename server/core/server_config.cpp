@@ -38,7 +38,14 @@ void ServerConfig::apply(const std::map<std::string, std::string>& s) {
     else if (k == "body_height_m") body_height_m = positive(k, v);
     else if (k == "topo_path_min_m") topo_path_min_m = number(k, v, true);
     else if (k == "object_ttl_s") object_ttl_s = positive(k, v);
-    else if (k == "history_keep_s") history_keep_s = number(k, v, true);
+    else if (k == "history_keep_s") {
+      // A cutoff in microseconds must fit the database's interval; a century is beyond any site.
+      const double keep = number(k, v, true);
+      if (keep > kMaxHistoryKeepS)
+        throw std::invalid_argument("[server] history_keep_s: expected seconds up to 100 years (3155760000), got '" +
+                                    v + "'");
+      history_keep_s = keep;
+    }
     else if (k == "commit_delay_ms") commit_delay_ms = number(k, v, true);
     else if (k == "robot_block_ms") robot_block_ms = positive(k, v);
     else if (k == "partition") partition = parse_robot_partition(v);

@@ -8,6 +8,8 @@
 
 namespace fleetmap {
 
+constexpr double kMaxHistoryKeepS = 100 * 365.25 * 86400;  // history_keep_s: a century
+
 struct ServerConfig {
   double alive_period_s = 1.0;        // told to robots in Start
   double lost_after_periods = 5;      // silent this many periods -> lost

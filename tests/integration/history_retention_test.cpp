@@ -99,6 +99,9 @@ TEST_F(HistoryRetention, ACallDeletesAtMostItsBatchOfEachTable) {
   // 0 keeps everything: even a pose of a day ago stays.
   add_history(b_, 1, "1 DAY");
   EXPECT_EQ(delete_history_before(*db, 0).trajectory_rows, 0u);
+  // Nor does a keep too long to count in microseconds (an overflow would put the cutoff
+  // in the future and delete every pose).
+  EXPECT_EQ(delete_history_before(*db, 1e300).trajectory_rows, 0u);
   EXPECT_EQ(poses(b_), 6);
 }
 

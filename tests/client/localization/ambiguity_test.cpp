@@ -27,6 +27,18 @@ void add_cluster(std::vector<Pose>& poses, std::vector<double>& weights, Pose ce
   }
 }
 
+// Two rooms' clusters of 50 particles: A at x 3.2, B at x 18.2, with these weights.
+struct Cloud {
+  std::vector<Pose> p;
+  std::vector<double> w;
+};
+Cloud rooms_a_b(double weight_a, double weight_b) {
+  Cloud c;
+  add_cluster(c.p, c.w, {3.2, 2.1, 0}, weight_a, 50);
+  add_cluster(c.p, c.w, {18.2, 2.1, 0}, weight_b, 50);
+  return c;
+}
+
 TEST(Ambiguity, TwoEqualClustersFarApartAreAmbiguous) {
   std::vector<Pose> p;
   std::vector<double> w;
@@ -77,10 +89,7 @@ PlaceScore score_fitting_at_a(double elsewhere) {
 TEST(AmbiguityByLikelihood, AHeavySecondPlaceThatExplainsTheScansWorseIsNot) {
   // About equal weights, so the Weight rule says ambiguous; B is worse by 0.5 per beam
   // (a wall of the scans missing there), far beyond the margin.
-  std::vector<Pose> p;
-  std::vector<double> w;
-  add_cluster(p, w, {3.2, 2.1, 0}, 0.52, 50);
-  add_cluster(p, w, {18.2, 2.1, 0}, 0.48, 50);
+  const auto [p, w] = rooms_a_b(0.52, 0.48);
   ASSERT_TRUE(find_ambiguity(p, w).ambiguous());
   const Ambiguity a = find_ambiguity(p, w, {}, score_fitting_at_a(-0.7));
   EXPECT_FALSE(a.ambiguous());
@@ -91,10 +100,7 @@ TEST(AmbiguityByLikelihood, AHeavySecondPlaceThatExplainsTheScansWorseIsNot) {
 
 TEST(AmbiguityByLikelihood, PlacesThatExplainTheScansAlikeAreAmbiguous) {
   // B far lighter (a fifth of A), but within the margin of A's score: both stay.
-  std::vector<Pose> p;
-  std::vector<double> w;
-  add_cluster(p, w, {3.2, 2.1, 0}, 0.8, 50);
-  add_cluster(p, w, {18.2, 2.1, 0}, 0.2, 50);
+  const auto [p, w] = rooms_a_b(0.8, 0.2);
   AmbiguityOptions o;
   const Ambiguity a = find_ambiguity(p, w, o, score_fitting_at_a(-0.2 - o.margin_per_beam / 2));
   ASSERT_TRUE(a.ambiguous());
@@ -105,10 +111,7 @@ TEST(AmbiguityByLikelihood, PlacesThatExplainTheScansAlikeAreAmbiguous) {
 
 TEST(AmbiguityByLikelihood, AHeaviestPlaceThatExplainsTheScansWorseIsKeptBesideTheBest) {
   // The weight says B, the scans say A: the filter's estimate (B) cannot be reported.
-  std::vector<Pose> p;
-  std::vector<double> w;
-  add_cluster(p, w, {18.2, 2.1, 0}, 0.7, 50);
-  add_cluster(p, w, {3.2, 2.1, 0}, 0.3, 50);
+  const auto [p, w] = rooms_a_b(0.3, 0.7);
   const Ambiguity a = find_ambiguity(p, w, {}, score_fitting_at_a(-0.7));
   ASSERT_EQ(a.places.size(), 2u);
   EXPECT_NEAR(a.places[0].x, 18.2, 0.05);

@@ -147,6 +147,16 @@ TEST(ServerConfig, ZeroIsAllowedOnlyWhereItMeansOff) {
   EXPECT_NE(refusal(c, {{"workers", "0"}}).find("workers: expected a positive whole number up to 1024, got '0'"), std::string::npos);
 }
 
+TEST(ServerConfig, AHistoryKeptLongerThanACenturyIsRefused) {
+  // Its cutoff in microseconds would overflow and fall in the future: every pose deleted.
+  ServerConfig c;
+  EXPECT_EQ(refusal(c, {{"history_keep_s", "1e300"}}),
+            "[server] history_keep_s: expected seconds up to 100 years (3155760000), got '1e300'");
+  EXPECT_EQ(c.history_keep_s, 0);
+  c.apply({{"history_keep_s", "3155760000"}});
+  EXPECT_EQ(c.history_keep_s, 3155760000.0);
+}
+
 TEST(ServerConfig, CountsMustBeWholeNumbers) {
   for (const char* key : {"batch_robots", "batch_requests", "max_full_map_segments", "max_image_bytes"}) {
     ServerConfig c;
