@@ -28,6 +28,16 @@ ME="$(id -un)"
 
 die() { echo "db.sh: $*" >&2; exit 1; }
 
+free_mib() { df -Pm "$HOME_DIR" | awk 'NR==2 {print $4}'; }
+
+# A start that failed says why as far as it can: the log's last lines and the free disk
+# (a full disk stops mariadb-install-db and InnoDB's redo log creation).
+start_failed() {
+  { echo "db.sh: last lines of $LOG:"; tail -n 15 "$LOG" 2>/dev/null | sed 's/^/  /'
+    echo "db.sh: $(free_mib) MiB free on $(df -P "$HOME_DIR" | awk 'NR==2 {print $6}')"; } >&2 || true
+  die "$@"
+}
+
 # The administrator logs in over the socket as the OS user (unix_socket auth, no password).
 admin() { mariadb --no-defaults --socket="$SOCK" -u "$ME" "$@"; }
 
@@ -74,15 +84,16 @@ CONF
 }
 
 load_sql() {
-  admin -e "CREATE DATABASE IF NOT EXISTS \`$DB\` CHARACTER SET utf8mb4 COLLATE utf8mb4_unicode_ci"
+  admin -e "CREATE DATABASE IF NOT EXISTS \`$DB\` CHARACTER SET utf8mb4 COLLATE utf8mb4_unicode_ci" \
+    || start_failed "creating the database $DB failed"
   for f in "$ROOT"/sql/[0-9]*.sql; do
-    admin "$DB" < "$f" || die "loading $f failed"
+    admin "$DB" < "$f" || start_failed "loading $f failed"
   done
   write_conf
   local role
   for role in server operator inspector web; do
     local pw; pw="$(password_for "$role")"
-    admin "$DB" <<SQL
+    admin "$DB" <<SQL || start_failed "creating the account fleetmap_$role failed"
 CREATE USER IF NOT EXISTS 'fleetmap_$role'@'%';
 ALTER USER 'fleetmap_$role'@'%' IDENTIFIED BY '$pw';
 GRANT fleetmap_${role}_role TO 'fleetmap_$role'@'%';
@@ -93,6 +104,8 @@ SQL
 
 start() {
   mkdir -p "$HOME_DIR"
+  # sun_path holds 107 bytes and a NUL; a longer path fails deep in mariadbd's log.
+  [ "${#SOCK}" -le 107 ] || die "socket path $SOCK is ${#SOCK} bytes, unix sockets allow 107: set FLEETMAP_HOME to a shorter folder"
   if running; then
     [ "${FLEETMAP_JOINER:-0}" = 1 ] || load_sql
     echo "db.sh: already running (socket $SOCK, port $PORT)"
@@ -105,11 +118,15 @@ start() {
     [ "$(id -u)" = 0 ] && chown -R nobody:nogroup "$DATA"
   elif [ ! -d "$DATA/mysql" ]; then
     echo "db.sh: creating data directory $DATA"
+    # The system tables, the schema and the redo log (256 MiB unless FLEETMAP_MYSQLD_ARGS
+    # says less) need about 400 MiB.
+    local free; free="$(free_mib)"
+    [ "$free" -ge 400 ] || die "only $free MiB free for $DATA, a new instance needs about 400 MiB"
     rm -rf "$DATA"
     # --skip-test-db: no anonymous accounts (SPEC 9).
     mariadb-install-db --no-defaults --datadir="$DATA" --user="$ME" \
       --auth-root-authentication-method=socket --skip-test-db >"$HOME_DIR/install.log" 2>&1 \
-      || die "mariadb-install-db failed, see $HOME_DIR/install.log"
+      || { LOG="$HOME_DIR/install.log" start_failed "mariadb-install-db failed, see $HOME_DIR/install.log"; }
   fi
   local mariadbd; mariadbd="$(command -v mariadbd || echo /usr/sbin/mariadbd)"
   # --max-connections: every robot holds its own connection (SPEC 4), so the default 151
@@ -123,15 +140,13 @@ start() {
     --max-allowed-packet=64M --innodb-buffer-pool-size=512M --innodb-log-file-size=256M \
     ${FLEETMAP_MYSQLD_ARGS:-} >/dev/null 2>&1 &
   local pid=$! i
-  for i in $(seq 1 240); do
+  # Two minutes: a fresh, loaded machine creates the redo log and the system tables slowly.
+  for i in $(seq 1 480); do
     running && break
-    if ! kill -0 "$pid" 2>/dev/null; then
-      grep -E '\[ERROR\]' "$LOG" | tail -n 3 >&2 || true
-      die "server exited at start (port $PORT taken? set FLEETMAP_PORT), see $LOG"
-    fi
+    kill -0 "$pid" 2>/dev/null || start_failed "server exited at start (port $PORT taken? set FLEETMAP_PORT), see $LOG"
     sleep 0.25
   done
-  running || die "server did not answer within 60 s, see $LOG"
+  running || start_failed "server did not answer within 120 s, see $LOG"
   [ "${FLEETMAP_JOINER:-0}" = 1 ] || load_sql
   echo "db.sh: running (socket $SOCK, port $PORT, database $DB, config $CONF)"
 }

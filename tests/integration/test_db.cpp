@@ -58,8 +58,9 @@ void once_per_instance(const std::string& key, const std::function<void()>& setu
 }
 
 std::string db_script() {
+  // The options the fixture started the instance with (tests/CMakeLists.txt).
   return "FLEETMAP_HOME=" + instance_home() + " FLEETMAP_PORT=" + std::to_string(settings(Role::Inspector).port) +
-         " bash " + source_path("scripts/db.sh");
+         " FLEETMAP_MYSQLD_ARGS='" FLEETMAP_TEST_DB_MYSQLD_ARGS "' bash " + source_path("scripts/db.sh");
 }
 
 std::string temp_path(const std::string& name) {
