@@ -1,9 +1,7 @@
 // The whole task life cycle with the real programs: fleetmap-server, four fleetmap-robot
 // processes on GDC1 (each with its own account), operator goals and an abort.
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
+#include <memory>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -14,29 +12,11 @@
 namespace fleetmap::test {
 namespace {
 
-class RobotProcess {
- public:
-  RobotProcess(const std::string& name, const std::string& start, int seed) {
-    const std::string pw_file = temp_path(name + ".pw");
-    const std::string cmd = "exec " + std::string(FLEETMAP_BIN_DIR) + "/fleetmap-robot --config " +
-                            std::getenv("FLEETMAP_CONFIG") + " --user " + name + " --password-file " + pw_file +
-                            " --start " + start + " --speed 1.5 --tracking-particles 500 --seed " +
-                            std::to_string(seed) + " >" + temp_path(name + ".log") + " 2>&1";
-    pid_ = fork();
-    if (pid_ == 0) {
-      execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-      _exit(127);
-    }
-  }
-  ~RobotProcess() {
-    ::kill(pid_, SIGTERM);
-    int status = 0;
-    waitpid(pid_, &status, 0);
-  }
-
- private:
-  pid_t pid_ = -1;
-};
+// A robot tracking from its true start pose (the operator's initial pose).
+std::unique_ptr<RobotSimProcess> start_robot(const std::string& name, const std::string& start, int seed) {
+  return std::make_unique<RobotSimProcess>(
+      name, "--start " + start + " --speed 1.5 --tracking-particles 500 --seed " + std::to_string(seed));
+}
 
 std::string task_state(const std::string& robot) {
   auto c = admin();
@@ -65,16 +45,16 @@ TEST(FleetEndToEnd, ThreeRobotsArriveAFourthIsAbortedAndStops) {
     ASSERT_EQ(run("fleetmap", "pose-ini " + r.name + " " + r.start).exit_code, 0);
   }
   ServerProcess server("", "e2e_server.log");
-  std::vector<std::unique_ptr<RobotProcess>> procs;
+  std::vector<std::unique_ptr<RobotSimProcess>> procs;
   int seed = 1;
-  for (const auto& r : robots) procs.push_back(std::make_unique<RobotProcess>(r.name, r.start, seed++));
+  for (const auto& r : robots) procs.push_back(start_robot(r.name, r.start, seed++));
 
   // All four registered and reporting poses.
   auto reporting = [] {
     return scalar("SELECT COUNT(*) FROM robots WHERE db_user LIKE 'e2e_r%' AND removed_at IS NULL AND x IS NOT NULL");
   };
   for (int i = 0; i < 300 && reporting() < 4; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  ASSERT_EQ(reporting(), 4) << read_file(temp_path("e2e_r1.log"));
+  ASSERT_EQ(reporting(), 4) << procs[0]->log();
 
   for (const auto& r : robots)
     ASSERT_EQ(run("fleetmap", "goal " + r.name + " " + std::to_string(r.gx) + " " + std::to_string(r.gy)).exit_code, 0);

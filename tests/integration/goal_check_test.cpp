@@ -7,12 +7,10 @@
 // The map is written here: 20 m x 10 m, a wall at x = 10 with a 1 m gap (y 4.5..5.5),
 // which a robot of radius 0.3 m passes and one of 0.6 m does not, and a closed box at
 // x 15..17, y 2..4.
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <string>
 #include <thread>
 
@@ -110,28 +108,10 @@ TEST_F(GoalCheck, ConnectionFlagsAfterTheSubcommandAreTheSameAsBefore) {
 
 // The goal was fine when given; an avoided area drawn over it before the robot set off
 // makes GetPath answer no_path: the task fails with the reason, and the robot stays.
-class RobotProcess {
- public:
-  RobotProcess(const std::string& name, const std::string& start) {
-    const std::string cmd = "exec " + std::string(FLEETMAP_BIN_DIR) + "/fleetmap-robot --config " +
-                            std::getenv("FLEETMAP_CONFIG") + " --user " + name + " --password-file " +
-                            temp_path(name + ".pw") + " --start " + start +
-                            " --particles 500 --tracking-particles 300 --seed 3 >" + temp_path(name + ".log") + " 2>&1";
-    pid_ = fork();
-    if (pid_ == 0) {
-      execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-      _exit(127);
-    }
-  }
-  ~RobotProcess() {
-    ::kill(pid_, SIGTERM);
-    int status = 0;
-    waitpid(pid_, &status, 0);
-  }
-
- private:
-  pid_t pid_ = -1;
-};
+std::unique_ptr<RobotSimProcess> start_robot(const std::string& name, const std::string& start) {
+  return std::make_unique<RobotSimProcess>(name,
+                                           "--start " + start + " --particles 500 --tracking-particles 300 --seed 3");
+}
 
 TEST_F(GoalCheck, NoPathAtGetPathFailsTheTaskAndTheSimulatedRobotStops) {
   admin()->query("UPDATE robots SET x = NULL, y = NULL WHERE db_user = 'gc_r1'").execute();
@@ -142,11 +122,11 @@ TEST_F(GoalCheck, NoPathAtGetPathFailsTheTaskAndTheSimulatedRobotStops) {
   ASSERT_EQ(run("fleetmap", "avoid add gc_gap --id late --wkt 'POLYGON((14 7, 16 7, 16 9, 14 9, 14 7))'").exit_code, 0);
 
   ServerProcess server("", "gc_server.log");
-  RobotProcess robot("gc_r1", "5 5 0");
+  const auto robot = start_robot("gc_r1", "5 5 0");
   const bool failed = wait_until([&] { return scalar("SELECT state = 'failed' FROM tasks WHERE id = " + task) == 1; },
                                  std::chrono::seconds(20));
   EXPECT_EQ(run("fleetmap", "avoid remove gc_gap late").exit_code, 0);
-  ASSERT_TRUE(failed) << read_file(temp_path("gc_r1.log")) << server.log();
+  ASSERT_TRUE(failed) << robot->log() << server.log();
   auto c = admin();
   const std::string reason = std::string(c->query("SELECT reason FROM tasks WHERE id = " + task).store()[0][0]);
   EXPECT_NE(reason.find("no path to (15.000000, 8.000000)"), std::string::npos) << reason;
@@ -155,8 +135,8 @@ TEST_F(GoalCheck, NoPathAtGetPathFailsTheTaskAndTheSimulatedRobotStops) {
   ASSERT_TRUE(wait_until([&] { return scalar("SELECT state = 'stopped' FROM robots WHERE id = " + robot_id_) == 1; }));
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));
   EXPECT_LT(scalar("SELECT ROUND(100 * SQRT(POW(x - 5, 2) + POW(y - 5, 2))) FROM robots WHERE id = " + robot_id_), 50);
-  EXPECT_NE(read_file(temp_path("gc_r1.log")).find("GetPath refused (no_path)"), std::string::npos)
-      << read_file(temp_path("gc_r1.log"));
+  EXPECT_NE(robot->log().find("GetPath refused (no_path)"), std::string::npos)
+      << robot->log();
   // The operator sees it too.
   const RunResult t = run("fleetmap", "tasks --robot gc_r1 --limit 1 --json");
   ASSERT_EQ(t.exit_code, 0) << t.err;

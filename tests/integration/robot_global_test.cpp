@@ -1,9 +1,6 @@
 // fleetmap-robot --global with the real server and database: a robot that boots with no
 // usable initial pose localizes globally on GDC1 (a look around), reports the pose it
 // found, and drives to an operator's goal until the task is done.
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <thread>
@@ -49,38 +46,22 @@ TEST(RobotGlobal, BootsWithoutAPoseLocalizesAndDrivesToAGoal) {
   // (pure pursuit does not turn in place first: facing away it arcs into a wall).
   const double sx = -24, sy = 8.6, stheta = 2.0944, gx = -14, gy = 8.6;
   ServerProcess server("", "glob_server.log");
-  const std::string log = temp_path(name + ".log");
-  const std::string cmd = "exec " + std::string(FLEETMAP_BIN_DIR) + "/fleetmap-robot --config " +
-                          std::getenv("FLEETMAP_CONFIG") + " --user " + name + " --password-file " +
-                          temp_path(name + ".pw") + " --global --start " + std::to_string(sx) + " " +
-                          std::to_string(sy) + " " + std::to_string(stheta) + " --speed 1.5 --tracking-particles 500 --seed 3 >" + log + " 2>&1";
-  const pid_t pid = fork();
-  if (pid == 0) {
-    execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  struct Reaper {
-    pid_t pid;
-    ~Reaper() {
-      ::kill(pid, SIGTERM);
-      int status = 0;
-      waitpid(pid, &status, 0);
-    }
-  } reaper{pid};
+  RobotSimProcess robot(name, "--global --start " + std::to_string(sx) + " " + std::to_string(sy) + " " +
+                                  std::to_string(stheta) + " --speed 1.5 --tracking-particles 500 --seed 3");
 
   // Localized: the first pose it reports is the truth's, not the operator's. About 10 s of
   // computation on a quiet machine (docs/localization.md); the bound leaves room for a loaded one.
   ASSERT_TRUE(wait_until([&] { return reported_cm_from(name, sx, sy) >= 0; }, std::chrono::seconds(120),
                          std::chrono::milliseconds(200)))
-      << read_file(log);
-  EXPECT_LT(reported_cm_from(name, sx, sy), 30) << read_file(log);
-  EXPECT_NE(read_file(log).find("localized after"), std::string::npos) << read_file(log);
+      << robot.log();
+  EXPECT_LT(reported_cm_from(name, sx, sy), 30) << robot.log();
+  EXPECT_NE(robot.log().find("localized after"), std::string::npos) << robot.log();
 
   ASSERT_EQ(run("fleetmap", "goal " + name + " " + std::to_string(gx) + " " + std::to_string(gy)).exit_code, 0);
   EXPECT_TRUE(wait_until([&] { return latest_task_state(name) == "done"; }, std::chrono::seconds(40),
                          std::chrono::milliseconds(200)))
-      << latest_task_state(name) << "\n" << read_file(log);
-  EXPECT_LT(reported_cm_from(name, gx, gy), 60) << read_file(log);
+      << latest_task_state(name) << "\n" << robot.log();
+  EXPECT_LT(reported_cm_from(name, gx, gy), 60) << robot.log();
 }
 
 }  // namespace

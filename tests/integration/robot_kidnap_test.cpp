@@ -3,9 +3,6 @@
 // so in SendPos ("status": "lost", docs/protocol.md), which fails its task on the server,
 // and it must localize globally again and report its new pose. Detection and recovery
 // times are benchmarks (bench-localization --kidnaps); here they are printed only.
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -80,46 +77,28 @@ TEST(RobotKidnap, IsDetectedReportedLostAndLocalizesAgain) {
   // elsewhere: its estimate then still moves west from about x = 3.
   const double kx = -24, ky = 8.6, ktheta = 2.0944;
   ServerProcess server("", "kid_server.log");
-  const std::string log = temp_path(name + ".log");
-  std::remove(log.c_str());
-  const std::string cmd = "exec " + std::string(FLEETMAP_BIN_DIR) + "/fleetmap-robot --config " +
-                          std::getenv("FLEETMAP_CONFIG") + " --user " + name + " --password-file " +
-                          temp_path(name + ".pw") + " --start 10 8.6 3.14159 --kidnap 8 " + std::to_string(kx) + " " +
-                          std::to_string(ky) + " " + std::to_string(ktheta) +
-                          " --speed 1.0 --tracking-particles 500 --seed 3 >" + log + " 2>&1";
-  const pid_t pid = fork();
-  if (pid == 0) {
-    execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  struct Reaper {
-    pid_t pid;
-    ~Reaper() {
-      ::kill(pid, SIGTERM);
-      int status = 0;
-      waitpid(pid, &status, 0);
-    }
-  } reaper{pid};
+  RobotSimProcess robot(name, "--start 10 8.6 3.14159 --kidnap 8 " + std::to_string(kx) + " " + std::to_string(ky) +
+                                  " " + std::to_string(ktheta) + " --speed 1.0 --tracking-particles 500 --seed 3");
 
   ASSERT_TRUE(wait_until([&] { return reported_cm_from(name, 10, 8.6) >= 0; }, std::chrono::seconds(60),
                          std::chrono::milliseconds(100)))
-      << read_file(log);
+      << robot.log();
   ASSERT_EQ(run("fleetmap", "goal " + name + " -20 8.6").exit_code, 0);
   ASSERT_TRUE(wait_until([&] { return latest_task(name).first == "active"; }, std::chrono::seconds(30),
                          std::chrono::milliseconds(100)))
-      << latest_task(name).first << "\n" << read_file(log);
+      << latest_task(name).first << "\n" << robot.log();
 
   // The kidnap, then the lost report: the server fails the task with the robot's reason.
-  ASSERT_TRUE(wait_until([&] { return read_file(log).find("kidnapped") != std::string::npos; },
+  ASSERT_TRUE(wait_until([&] { return robot.log().find("kidnapped") != std::string::npos; },
                          std::chrono::seconds(30), std::chrono::milliseconds(50)))
-      << read_file(log);
+      << robot.log();
   const auto kidnapped = std::chrono::steady_clock::now();
   ASSERT_TRUE(wait_until([&] { return latest_task(name).first == "failed"; }, std::chrono::seconds(30),
                          std::chrono::milliseconds(50)))
-      << latest_task(name).first << "\n" << read_file(log);
+      << latest_task(name).first << "\n" << robot.log();
   const auto detected = std::chrono::steady_clock::now();
   EXPECT_NE(latest_task(name).second.find("robot lost"), std::string::npos) << latest_task(name).second;
-  std::string text = read_file(log);
+  std::string text = robot.log();
   // Detected after the kidnap, never before it (no false alarm on the drive).
   ASSERT_NE(text.find("lost:"), std::string::npos) << text;
   EXPECT_LT(text.find("kidnapped"), text.find("lost:")) << text;
@@ -130,12 +109,12 @@ TEST(RobotKidnap, IsDetectedReportedLostAndLocalizesAgain) {
   std::optional<std::pair<double, double>> truth;
   ASSERT_TRUE(wait_until(
       [&] {
-        truth = localized_truth(read_file(log));
+        truth = localized_truth(robot.log());
         return truth.has_value();
       },
       std::chrono::seconds(120), std::chrono::milliseconds(100)))
-      << read_file(log);
-  EXPECT_LT(std::hypot(truth->first - kx, truth->second - ky), 2.0) << read_file(log);
+      << robot.log();
+  EXPECT_LT(std::hypot(truth->first - kx, truth->second - ky), 2.0) << robot.log();
   EXPECT_TRUE(wait_until(
       [&] {
         const long long cm = reported_cm_from(name, truth->first, truth->second);
@@ -143,9 +122,9 @@ TEST(RobotKidnap, IsDetectedReportedLostAndLocalizesAgain) {
       },
       std::chrono::seconds(10), std::chrono::milliseconds(100)))
       << reported_cm_from(name, truth->first, truth->second) << " cm from the truth, state "
-      << robot_column(name, "state") << "\n" << read_file(log);
+      << robot_column(name, "state") << "\n" << robot.log();
   const auto recovered = std::chrono::steady_clock::now();
-  text = read_file(log);
+  text = robot.log();
   EXPECT_EQ(count_of(text, "lost:"), 1u) << text;
   const auto ms = [](auto d) { return std::chrono::duration_cast<std::chrono::milliseconds>(d).count(); };
   std::cout << "kidnap: task failed " << ms(detected - kidnapped) << " ms after the kidnap was logged, pose reported "

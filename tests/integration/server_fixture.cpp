@@ -12,9 +12,9 @@
 
 namespace fleetmap::test {
 
-pid_t spawn_server(const std::string& flags, const std::string& log_path) {
-  const std::string cmd = "exec " + std::string(FLEETMAP_BIN_DIR) + "/fleetmap-server --log-level debug " + flags +
-                          " >>" + log_path + " 2>&1";
+namespace {
+
+pid_t spawn_shell(const std::string& cmd) {
   const pid_t pid = fork();
   if (pid == 0) {
     execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
@@ -23,6 +23,30 @@ pid_t spawn_server(const std::string& flags, const std::string& log_path) {
   if (pid < 0) throw std::runtime_error("fork failed");
   return pid;
 }
+
+void terminate_and_wait(pid_t pid) {
+  ::kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+}
+
+}  // namespace
+
+pid_t spawn_server(const std::string& flags, const std::string& log_path) {
+  return spawn_shell("exec " + std::string(FLEETMAP_BIN_DIR) + "/fleetmap-server --log-level debug " + flags + " >>" +
+                     log_path + " 2>&1");
+}
+
+RobotSimProcess::RobotSimProcess(const std::string& name, const std::string& flags)
+    : log_path_(temp_path(name + ".log")) {
+  pid_ = spawn_shell("exec " + std::string(FLEETMAP_BIN_DIR) + "/fleetmap-robot --config " +
+                     std::getenv("FLEETMAP_CONFIG") + " --user " + name + " --password-file " +
+                     temp_path(name + ".pw") + " " + flags + " >" + log_path_ + " 2>&1");
+}
+
+RobotSimProcess::~RobotSimProcess() { terminate_and_wait(pid_); }
+
+std::string RobotSimProcess::log() const { return read_file(log_path_); }
 
 ServerProcess::ServerProcess(const std::string& flags, const std::string& log_name)
     : log_path_(temp_path(log_name)), pid_(spawn_server(flags, log_path_)) {}
@@ -33,9 +57,7 @@ ServerProcess::~ServerProcess() {
 
 void ServerProcess::terminate() {
   if (pid_ <= 0) return;
-  ::kill(pid_, SIGTERM);
-  int status = 0;
-  waitpid(pid_, &status, 0);
+  terminate_and_wait(pid_);
   pid_ = -1;
 }
 

@@ -36,6 +36,21 @@ class ServerProcess {
   pid_t pid_ = -1;
 };
 
+// A simulated robot: build/bin/fleetmap-robot --config $FLEETMAP_CONFIG --user NAME
+// --password-file <scratch>/NAME.pw FLAGS, its output in <scratch>/NAME.log (replaced).
+class RobotSimProcess {
+ public:
+  RobotSimProcess(const std::string& name, const std::string& flags);
+  ~RobotSimProcess();  // SIGTERM, then waits
+  std::string log() const;
+  RobotSimProcess(const RobotSimProcess&) = delete;
+  RobotSimProcess& operator=(const RobotSimProcess&) = delete;
+
+ private:
+  std::string log_path_;
+  pid_t pid_ = -1;
+};
+
 // Creates (or re-creates) a robot account on map via the real CLI; returns its password.
 std::string add_robot(const std::string& name, const std::string& map);
 // Many accounts at once (a fleet): the account procedures of sql/40_robot_accounts.sql,
