@@ -85,10 +85,7 @@ void bench_map(const std::string& path, const TrialSettings& base, const std::ve
       rows.push_back({map_label(path), c, std::move(*g)});
     if (base.kidnaps > 0 || base.false_alarm_drive > 0) {
       TrialSettings k = base;
-      k.filter = preset(c).value_or(base.filter);
-      k.filter.particles = base.filter.particles;
-      k.filter.threads = base.filter.threads;
-      if (base.short_beyond >= 0) k.filter.sensor.short_beyond = base.short_beyond;
+      k.filter = trial_filter(base, c);
       report_kidnap(stdout, map, world, k);
     }
   }
@@ -126,6 +123,24 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   double turn_deg = 60;
   app.add_option("--look-around-turn", turn_deg, "degrees turned per look-around step")->capture_default_str();
+  app.add_option("--global-step", s.global_step, "global localization: metres driven between scans after the look around")
+      ->capture_default_str();
+  app.add_option("--search-updates", s.search_updates,
+                 "ParticleFilterOptions::search_updates for every preset (negative: the preset's); with a deferred look around, 2 or more search once, at the first step driven, on every scan")
+      ->capture_default_str();
+  app.add_option("--search-candidates", s.search_candidates,
+                 "places the global search reranks on cast rays, for every preset (0: the preset's)")
+      ->capture_default_str();
+  app.add_option("--search-clusters", s.search_clusters,
+                 "of those, the places that get particles, for every preset (0: the preset's)")
+      ->capture_default_str();
+  app.add_option("--tempering-ess", s.tempering_ess,
+                 "adaptive tempering's share of effective particles, for every preset (0: none; negative: the "
+                 "preset's)")
+      ->capture_default_str();
+  app.add_option("--tempering-stages", s.tempering_stages,
+                 "annealing stages per scan, for every preset (negative: the preset's)")
+      ->capture_default_str();
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_option("--short-beyond", s.short_beyond,

@@ -378,15 +378,25 @@ void report_map_header(std::FILE* out, const std::string& path, const Map& map, 
                     "iterations; no success rate, tracking error or rate given\n");
 }
 
+ParticleFilterOptions trial_filter(const TrialSettings& base, const std::string& name) {
+  ParticleFilterOptions f = preset(name).value_or(base.filter);
+  f.particles = base.filter.particles;
+  f.threads = base.filter.threads;
+  f.kld.max_particles = base.filter.particles;
+  if (base.short_beyond >= 0) f.sensor.short_beyond = base.short_beyond;
+  if (base.search_updates >= 0) f.search_updates = static_cast<size_t>(base.search_updates);
+  if (base.search_candidates > 0) f.search_candidates = base.search_candidates;
+  if (base.search_clusters > 0) f.search_clusters = base.search_clusters;
+  if (base.tempering_ess >= 0) f.tempering_ess = base.tempering_ess;
+  if (base.tempering_stages >= 0) f.tempering_stages = base.tempering_stages;
+  return f;
+}
+
 std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::shared_ptr<const RayCaster> world,
                                           const TrialSettings& base, const std::string& name, bool global,
                                           bool tracking) {
   TrialSettings s = base;
-  s.filter = preset(name).value_or(base.filter);
-  s.filter.particles = base.filter.particles;
-  s.filter.threads = base.filter.threads;
-  s.filter.kld.max_particles = base.filter.particles;
-  if (base.short_beyond >= 0) s.filter.sensor.short_beyond = base.short_beyond;
+  s.filter = trial_filter(base, name);
   const ParticleFilterOptions& f = s.filter;
   std::fprintf(out,
                "-- %s: %s, gamma %.2g, short beyond %.2g m, tempering ESS %.2g x %d stages, init density %.2g /m2, "
