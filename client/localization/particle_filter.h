@@ -128,7 +128,7 @@ struct ParticleFilterOptions {
   // robust_search() within a second of computation (bench-localization --config
   // search,fast): the look around searches once, at its end, on every scan; fewer
   // candidates, clusters and particles; the searched cloud weighed on a third of the
-  // earlier scans' beams; KLD sampling once it has collapsed.
+  // earlier scans' beams; six annealing stages; KLD sampling once it has collapsed.
   static ParticleFilterOptions fast_search();
 };
 
