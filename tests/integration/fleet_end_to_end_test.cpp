@@ -28,9 +28,7 @@ std::string task_state(const std::string& robot) {
 }
 
 TEST(FleetEndToEnd, ThreeRobotsArriveAFourthIsAbortedAndStops) {
-  if (scalar("SELECT COUNT(*) FROM maps WHERE name = 'e2e_gdc1'") == 0) {
-    ASSERT_EQ(run("fleetmap", "map import " + real_map("GDC1.vectormap.txt") + " --name e2e_gdc1").exit_code, 0);
-  }
+  ASSERT_TRUE(import_real_map_once("e2e_gdc1", "GDC1.vectormap.txt"));
   // name, true start pose = operator's initial pose, goal: along the upper wing's corridor
   const struct {
     std::string name, start;

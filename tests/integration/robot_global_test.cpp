@@ -33,11 +33,9 @@ long long reported_cm_from(const std::string& robot, double x, double y) {
 }
 
 TEST(RobotGlobal, BootsWithoutAPoseLocalizesAndDrivesToAGoal) {
-  if (scalar("SELECT COUNT(*) FROM maps WHERE name = 'glob_gdc1'") == 0) {
-    ASSERT_EQ(run("fleetmap", "map import " + real_map("GDC1.vectormap.txt") + " --name glob_gdc1").exit_code, 0);
-  }
+  ASSERT_TRUE(import_real_map_once("glob_gdc1", "GDC1.vectormap.txt"));
   const std::string name = "glob_r1";
-  write_file(temp_path(name + ".pw"), add_robot(name, "glob_gdc1") + "\n");
+  add_robot_with_password_file(name, "glob_gdc1");
   // An operator's initial pose 14 m off: --global must not use it (a robot tracking from
   // it would report a pose near (-10, 8.6), not near the truth).
   ASSERT_EQ(run("fleetmap", "pose-ini " + name + " -10 8.6 0").exit_code, 0);

@@ -65,11 +65,9 @@ size_t count_of(const std::string& text, const std::string& what) {
 }
 
 TEST(RobotKidnap, IsDetectedReportedLostAndLocalizesAgain) {
-  if (scalar("SELECT COUNT(*) FROM maps WHERE name = 'kid_gdc1'") == 0) {
-    ASSERT_EQ(run("fleetmap", "map import " + real_map("GDC1.vectormap.txt") + " --name kid_gdc1").exit_code, 0);
-  }
+  ASSERT_TRUE(import_real_map_once("kid_gdc1", "GDC1.vectormap.txt"));
   const std::string name = "kid_r1";
-  write_file(temp_path(name + ".pw"), add_robot(name, "kid_gdc1") + "\n");
+  add_robot_with_password_file(name, "kid_gdc1");
   // It tracks from the operator's initial pose (the truth), east end of the upper wing's
   // corridor, facing west to its goal 30 m away.
   ASSERT_EQ(run("fleetmap", "pose-ini " + name + " 10 8.6 3.14159").exit_code, 0);

@@ -71,6 +71,15 @@ void ServerProcess::kill9() {
 
 std::string ServerProcess::log() const { return read_file(log_path_); }
 
+bool import_real_map_once(const std::string& name, const std::string& file) {
+  if (scalar("SELECT COUNT(*) FROM maps WHERE name = '" + name + "'") > 0) return true;
+  return run("fleetmap", "map import " + real_map(file) + " --name " + name).exit_code == 0;
+}
+
+void add_robot_with_password_file(const std::string& name, const std::string& map) {
+  write_file(temp_path(name + ".pw"), add_robot(name, map) + "\n");
+}
+
 std::string add_robot(const std::string& name, const std::string& map) {
   const std::string password = "pw-" + name + "-0123456789";
   const std::string pw_file = temp_path(name + ".pw");
