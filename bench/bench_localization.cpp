@@ -124,23 +124,26 @@ int main(int argc, char** argv) {
   double turn_deg = 60;
   app.add_option("--look-around-turn", turn_deg, "degrees turned per look-around step")->capture_default_str();
   app.add_option("--global-step", s.global_step, "global localization: metres driven between scans after the look around")
+      ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  // The search and tempering overrides leave the `seed` preset alone: it is the baseline.
   app.add_option("--search-updates", s.search_updates,
-                 "ParticleFilterOptions::search_updates for every preset (negative: the preset's); with a deferred look around, 2 or more search once, at the first step driven, on every scan")
-      ->capture_default_str();
+                 "ParticleFilterOptions::search_updates for every preset but seed (default: the preset's); after a "
+                 "deferred look around, 2 or more search once, at the first step driven, on every scan")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--search-candidates", s.search_candidates,
-                 "places the global search reranks on cast rays, for every preset (0: the preset's)")
-      ->capture_default_str();
+                 "places the global search reranks on cast rays, for every preset but seed (default: the preset's)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--search-clusters", s.search_clusters,
-                 "of those, the places that get particles, for every preset (0: the preset's)")
-      ->capture_default_str();
+                 "of those, the places that get particles, for every preset but seed (default: the preset's)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--tempering-ess", s.tempering_ess,
-                 "adaptive tempering's share of effective particles, for every preset (0: none; negative: the "
-                 "preset's)")
-      ->capture_default_str();
+                 "adaptive tempering's share of effective particles, for every preset but seed (0: none; default: "
+                 "the preset's)")
+      ->check(CLI::Range(0.0, 1.0));
   app.add_option("--tempering-stages", s.tempering_stages,
-                 "annealing stages per scan, for every preset (negative: the preset's)")
-      ->capture_default_str();
+                 "annealing stages per scan, for every preset but seed (default: the preset's)")
+      ->check(CLI::Range(1, 100));
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_option("--short-beyond", s.short_beyond,

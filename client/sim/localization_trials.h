@@ -55,11 +55,11 @@ struct TrialSettings {
   LostDetectorOptions lost;
   // The sensor model's short_beyond for every preset (sensor_model.h); negative: the preset's.
   double short_beyond = -1;
-  // ParticleFilterOptions::search_updates for every preset; negative: the preset's.
+  // Overrides of ParticleFilterOptions for every preset but `seed` (the baseline):
+  // search_updates, tempering_ess and tempering_stages (negative: the preset's),
+  // search_candidates and search_clusters (0: the preset's).
   int search_updates = -1;
-  // ParticleFilterOptions::search_candidates and search_clusters for every preset; 0: the preset's.
   size_t search_candidates = 0, search_clusters = 0;
-  // ParticleFilterOptions::tempering_ess and tempering_stages for every preset; negative: the preset's.
   double tempering_ess = -1;
   int tempering_stages = -1;
 };
@@ -129,8 +129,8 @@ void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
 // (robust_search, the robot's default), "fast" (fast_search); nullopt for another name.
 std::optional<ParticleFilterOptions> preset(const std::string& name);
 const std::vector<std::string>& preset_names();
-// The preset `name` (base.filter for another name) with base's NP, threads and overrides
-// (short_beyond, search_updates, search_candidates, search_clusters, tempering): the filter every trial of that preset runs.
+// The filter every trial of preset `name` runs (base.filter for another name): base's NP,
+// threads and short_beyond, and for every preset but `seed` base's other overrides.
 ParticleFilterOptions trial_filter(const TrialSettings& base, const std::string& name);
 
 // An AMRL map (*.vectormap.txt), a generated one ("gen:KIND[:SEED]", generated_maps.h)

@@ -10,7 +10,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <memory>
 #include <string>
 #include <thread>
 
@@ -108,11 +107,6 @@ TEST_F(GoalCheck, ConnectionFlagsAfterTheSubcommandAreTheSameAsBefore) {
 
 // The goal was fine when given; an avoided area drawn over it before the robot set off
 // makes GetPath answer no_path: the task fails with the reason, and the robot stays.
-std::unique_ptr<RobotSimProcess> start_robot(const std::string& name, const std::string& start) {
-  return std::make_unique<RobotSimProcess>(name,
-                                           "--start " + start + " --particles 500 --tracking-particles 300 --seed 3");
-}
-
 TEST_F(GoalCheck, NoPathAtGetPathFailsTheTaskAndTheSimulatedRobotStops) {
   admin()->query("UPDATE robots SET x = NULL, y = NULL WHERE db_user = 'gc_r1'").execute();
   write_file(temp_path("gc_r1.pw"), password_ + "\n");
@@ -122,11 +116,11 @@ TEST_F(GoalCheck, NoPathAtGetPathFailsTheTaskAndTheSimulatedRobotStops) {
   ASSERT_EQ(run("fleetmap", "avoid add gc_gap --id late --wkt 'POLYGON((14 7, 16 7, 16 9, 14 9, 14 7))'").exit_code, 0);
 
   ServerProcess server("", "gc_server.log");
-  const auto robot = start_robot("gc_r1", "5 5 0");
+  RobotSimProcess robot("gc_r1", "--start 5 5 0 --particles 500 --tracking-particles 300 --seed 3");
   const bool failed = wait_until([&] { return scalar("SELECT state = 'failed' FROM tasks WHERE id = " + task) == 1; },
                                  std::chrono::seconds(20));
   EXPECT_EQ(run("fleetmap", "avoid remove gc_gap late").exit_code, 0);
-  ASSERT_TRUE(failed) << robot->log() << server.log();
+  ASSERT_TRUE(failed) << robot.log() << server.log();
   auto c = admin();
   const std::string reason = std::string(c->query("SELECT reason FROM tasks WHERE id = " + task).store()[0][0]);
   EXPECT_NE(reason.find("no path to (15.000000, 8.000000)"), std::string::npos) << reason;
@@ -135,8 +129,7 @@ TEST_F(GoalCheck, NoPathAtGetPathFailsTheTaskAndTheSimulatedRobotStops) {
   ASSERT_TRUE(wait_until([&] { return scalar("SELECT state = 'stopped' FROM robots WHERE id = " + robot_id_) == 1; }));
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));
   EXPECT_LT(scalar("SELECT ROUND(100 * SQRT(POW(x - 5, 2) + POW(y - 5, 2))) FROM robots WHERE id = " + robot_id_), 50);
-  EXPECT_NE(robot->log().find("GetPath refused (no_path)"), std::string::npos)
-      << robot->log();
+  EXPECT_NE(robot.log().find("GetPath refused (no_path)"), std::string::npos) << robot.log();
   // The operator sees it too.
   const RunResult t = run("fleetmap", "tasks --robot gc_r1 --limit 1 --json");
   ASSERT_EQ(t.exit_code, 0) << t.err;

@@ -35,7 +35,7 @@ long long reported_cm_from(const std::string& robot, double x, double y) {
 TEST(RobotGlobal, BootsWithoutAPoseLocalizesAndDrivesToAGoal) {
   ASSERT_TRUE(import_real_map_once("glob_gdc1", "GDC1.vectormap.txt"));
   const std::string name = "glob_r1";
-  add_robot_with_password_file(name, "glob_gdc1");
+  add_robot(name, "glob_gdc1");
   // An operator's initial pose 14 m off: --global must not use it (a robot tracking from
   // it would report a pose near (-10, 8.6), not near the truth).
   ASSERT_EQ(run("fleetmap", "pose-ini " + name + " -10 8.6 0").exit_code, 0);

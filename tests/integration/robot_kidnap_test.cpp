@@ -67,7 +67,7 @@ size_t count_of(const std::string& text, const std::string& what) {
 TEST(RobotKidnap, IsDetectedReportedLostAndLocalizesAgain) {
   ASSERT_TRUE(import_real_map_once("kid_gdc1", "GDC1.vectormap.txt"));
   const std::string name = "kid_r1";
-  add_robot_with_password_file(name, "kid_gdc1");
+  add_robot(name, "kid_gdc1");
   // It tracks from the operator's initial pose (the truth), east end of the upper wing's
   // corridor, facing west to its goal 30 m away.
   ASSERT_EQ(run("fleetmap", "pose-ini " + name + " 10 8.6 3.14159").exit_code, 0);

@@ -72,12 +72,11 @@ void ServerProcess::kill9() {
 std::string ServerProcess::log() const { return read_file(log_path_); }
 
 bool import_real_map_once(const std::string& name, const std::string& file) {
-  if (scalar("SELECT COUNT(*) FROM maps WHERE name = '" + name + "'") > 0) return true;
+  auto db = admin();  // the query uses the connection: keep it open
+  mysqlpp::Query exists = db->query();
+  exists << "SELECT COUNT(*) FROM maps WHERE name = " << mysqlpp::quote << name;
+  if (std::stoll(std::string(exists.store()[0][0])) > 0) return true;
   return run("fleetmap", "map import " + real_map(file) + " --name " + name).exit_code == 0;
-}
-
-void add_robot_with_password_file(const std::string& name, const std::string& map) {
-  write_file(temp_path(name + ".pw"), add_robot(name, map) + "\n");
 }
 
 std::string add_robot(const std::string& name, const std::string& map) {

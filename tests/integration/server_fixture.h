@@ -54,10 +54,8 @@ class RobotSimProcess {
 // Imports the real map FLEETMAP_REAL_MAPS/file as `name` (fleetmap map import) unless a
 // map of that name exists: the suites of one instance share it. False when the import fails.
 bool import_real_map_once(const std::string& name, const std::string& file);
-// A robot account on map (add_robot) whose password is in <scratch>/NAME.pw, where
-// RobotSimProcess reads it.
-void add_robot_with_password_file(const std::string& name, const std::string& map);
-// Creates (or re-creates) a robot account on map via the real CLI; returns its password.
+// Creates (or re-creates) a robot account on map via the real CLI; returns its password,
+// which it also writes to <scratch>/NAME.pw (where RobotSimProcess reads it).
 std::string add_robot(const std::string& name, const std::string& map);
 // Many accounts at once (a fleet): the account procedures of sql/40_robot_accounts.sql,
 // which `robot add` calls, on one connection instead of two CLI processes per robot.
