@@ -144,6 +144,10 @@ int main(int argc, char** argv) {
   app.add_option("--tempering-stages", s.tempering_stages,
                  "annealing stages per scan, for every preset but seed (default: the preset's)")
       ->check(CLI::Range(1, 100));
+  app.add_option("--settle-after", s.settle_after,
+                 "update after which every scan since init is searched at once and the cloud settles on the best "
+                 "places, for every preset but seed (0: never; default: the preset's)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_option("--short-beyond", s.short_beyond,

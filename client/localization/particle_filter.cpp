@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "client/localization/parallel.h"
+#include "client/localization/place_refinement.h"
 #include "client/localization/stitched_scan.h"
 #include "client/localization/turn_registration.h"
 #include "common/raycast/sweep_ray_caster.h"
@@ -148,6 +149,9 @@ void ParticleFilter::init_global(std::optional<double> compass) {
   searches_ = 0;
   searched_scans_ = 0;
   looking_around_ = true;
+  from_global_ = true;
+  since_global_ = 0;
+  settled_.clear();
   since_scan_ = {};
   history_.clear();
   recent_.clear();
@@ -174,7 +178,7 @@ Odometry ParticleFilter::stitching_step(const Scan& before, const Scan& after) c
   return u;
 }
 
-bool ParticleFilter::reseed_from_search(double compass) {
+const GlobalSearch& ParticleFilter::global_search() {
   if (!search_) {
     GlobalSearchOptions so = options_.search;
     so.field.margin = options_.laser.rmax;
@@ -182,6 +186,11 @@ bool ParticleFilter::reseed_from_search(double compass) {
     so.threads = options_.threads;
     search_ = std::make_shared<GlobalSearch>(map_, so);
   }
+  return *search_;
+}
+
+bool ParticleFilter::reseed_from_search(double compass) {
+  global_search();
   std::vector<const std::vector<double>*> scans;
   std::vector<Odometry> odometry;
   for (size_t k = 0; k < history_.size(); ++k) {
@@ -225,10 +234,73 @@ bool ParticleFilter::reseed_from_search(double compass) {
   return true;
 }
 
+void ParticleFilter::settle(double compass) {
+  if (recent_.empty()) return;
+  std::vector<const std::vector<double>*> scans;
+  std::vector<Odometry> odometry;
+  for (size_t k = 0; k < recent_.size(); ++k) {
+    scans.push_back(&recent_[k].ranges);
+    odometry.push_back(k > 0 ? stitching_step(recent_[k - 1], recent_[k]) : recent_[k].since_previous);
+  }
+  const StitchedScan stitched = stitch_scans(scans, odometry, beams_, options_.laser.rmax, options_.settle_points);
+  if (stitched.ranges.empty()) return;
+  std::vector<Candidate> found = global_search().search(stitched.ranges, stitched.angles,
+                                                        std::numeric_limits<double>::infinity(), compass,
+                                                        compass_.half_width(), options_.search_candidates);
+  // The cloud's own places compete with the search's (its grid may fall between them).
+  for (const Pose& p : find_ambiguity(poses_, weights_, options_.ambiguity).places) found.push_back({p, 0});
+  if (found.empty()) return;
+  const std::vector<Odometry> offsets = recent_offsets();
+  const auto score_with = [&](std::vector<double>& synthetic, const Pose& place) {
+    return recent_log_likelihood(place, offsets, synthetic);
+  };
+  parallel_for(options_.threads, found.size(), [&](int, size_t begin, size_t end) {
+    std::vector<double> synthetic;
+    for (size_t i = begin; i < end; ++i) found[i].score = score_with(synthetic, found[i].pose);
+  });
+  std::stable_sort(found.begin(), found.end(), [](const Candidate& l, const Candidate& r) { return l.score > r.score; });
+  // The best distinct places, each refined to its own best pose.
+  const double separation = options_.ambiguity.min_separation;
+  const auto distinct = [&](const std::vector<Candidate>& from, size_t most) {
+    std::vector<Candidate> taken;
+    for (const Candidate& c : from) {
+      if (taken.size() >= most) break;
+      if (std::none_of(taken.begin(), taken.end(), [&](const Candidate& t) { return distance(t.pose, c.pose) <= separation; }))
+        taken.push_back(c);
+    }
+    return taken;
+  };
+  std::vector<Candidate> places = distinct(found, std::max<size_t>(1, options_.settle_places));
+  parallel_for(options_.threads, places.size(), [&](int, size_t begin, size_t end) {
+    std::vector<double> synthetic;
+    for (size_t i = begin; i < end; ++i) {
+      const RefinedPlace r = refine_place(places[i].pose, [&](const Pose& p) { return score_with(synthetic, p); });
+      places[i] = {r.pose, r.score};
+    }
+  });
+  std::stable_sort(places.begin(), places.end(), [](const Candidate& l, const Candidate& r) { return l.score > r.score; });
+  places = distinct(places, std::max<size_t>(1, options_.ambiguity.max_places));
+  settled_ = places;
+  // Places within the ambiguity margin of the best (per beam) share the cloud.
+  const double beams = static_cast<double>(recent_.size() * beams_.size());
+  const double floor = places.front().score - options_.ambiguity.margin_per_beam * beams;
+  while (places.back().score < floor) places.pop_back();
+  const size_t n = options_.search_particles > 0 ? options_.search_particles : options_.particles;
+  poses_.resize(n);
+  std::normal_distribution<double> n01(0.0, 1.0);
+  for (size_t i = 0; i < n; ++i) {
+    const Pose& p = places[i % places.size()].pose;
+    poses_[i] = {p.x + options_.settle_sd_xy * n01(rng_), p.y + options_.settle_sd_xy * n01(rng_),
+                 normalize_angle(p.theta + options_.settle_sd_theta * n01(rng_))};
+  }
+  weights_.assign(n, 1.0 / n);
+}
+
 void ParticleFilter::init_pose(const Pose& pose, double sd_xy, double sd_theta) {
   const size_t n = options_.particles;
   poses_.resize(n);
   global_phase_ = false;
+  from_global_ = false;
   recent_.clear();
   since_recent_ = {};
   std::normal_distribution<double> n01(0.0, 1.0);
@@ -246,6 +318,7 @@ void ParticleFilter::set_particles(std::vector<Pose> poses, std::vector<double> 
   poses_ = std::move(poses);
   weights_ = std::move(weights);
   global_phase_ = false;
+  from_global_ = false;
 }
 
 void ParticleFilter::predict(const Odometry& odometry) {
@@ -269,6 +342,7 @@ void ParticleFilter::update(const std::vector<double>& ranges, std::optional<dou
                                 " beams, got " + std::to_string(ranges.size()));
   if (poses_.empty()) throw std::logic_error("ParticleFilter::update: no particles (call init_global or init_pose)");
   searched_at_.clear();
+  if (from_global_) ++since_global_;
   if (options_.ambiguity.scans > 0) {
     if (recent_.size() >= options_.ambiguity.scans) recent_.erase(recent_.begin());
     recent_.push_back({since_recent_, ranges, compass});
@@ -346,6 +420,8 @@ void ParticleFilter::update(const std::vector<double>& ranges, std::optional<dou
   last_phi_ = 1 - budget;
   ++updates_;
   if (!global_phase_) history_.clear();
+  const std::optional<double> heading = compass ? compass : init_compass_;
+  if (from_global_ && options_.settle_after > 0 && since_global_ == options_.settle_after && heading) settle(*heading);
 }
 
 double ParticleFilter::weigh(double most) {
@@ -444,8 +520,7 @@ void ParticleFilter::roughen() {
   });
 }
 
-Ambiguity ParticleFilter::ambiguity(AmbiguityRule rule) const {
-  if (rule == AmbiguityRule::Weight || recent_.empty()) return find_ambiguity(poses_, weights_, options_.ambiguity);
+std::vector<Odometry> ParticleFilter::recent_offsets() const {
   // Each recent scan from a place: at the place composed with the motion from the latest
   // scan back to that one, stitched as for the global search (a look around's turns
   // from odometry alone would misplace its earlier scans by degrees).
@@ -453,16 +528,32 @@ Ambiguity ParticleFilter::ambiguity(AmbiguityRule rule) const {
   for (size_t k = 1; k < recent_.size(); ++k) at.push_back(compose(at.back(), stitching_step(recent_[k - 1], recent_[k])));
   std::vector<Odometry> back;
   for (const Pose& p : at) back.push_back(between(at.back(), p));
-  std::vector<double> synthetic(beams_.size());
-  const PlaceScore score = [&](const Pose& place) {
-    double ll = 0;
-    for (size_t k = 0; k < recent_.size(); ++k) {
-      const Pose p = compose(place, back[k]);
-      caster_->cast_scan(p.point(), p.theta, beams_, synthetic.data());
-      ll += sensor_.log_weight(recent_[k].ranges.data(), synthetic.data(), beams_.size());
-    }
-    return ll / static_cast<double>(recent_.size() * beams_.size());
-  };
+  return back;
+}
+
+double ParticleFilter::recent_log_likelihood(const Pose& place, const std::vector<Odometry>& offsets,
+                                             std::vector<double>& synthetic) const {
+  double ll = 0;
+  synthetic.resize(beams_.size());
+  for (size_t k = 0; k < recent_.size() && k < offsets.size(); ++k) {
+    const Pose p = compose(place, offsets[k]);
+    caster_->cast_scan(p.point(), p.theta, beams_, synthetic.data());
+    ll += sensor_.log_weight(recent_[k].ranges.data(), synthetic.data(), beams_.size());
+  }
+  return ll;
+}
+
+double ParticleFilter::recent_log_likelihood(const Pose& place) const {
+  std::vector<double> synthetic;
+  return recent_log_likelihood(place, recent_offsets(), synthetic);
+}
+
+Ambiguity ParticleFilter::ambiguity(AmbiguityRule rule) const {
+  if (rule == AmbiguityRule::Weight || recent_.empty()) return find_ambiguity(poses_, weights_, options_.ambiguity);
+  const std::vector<Odometry> offsets = recent_offsets();
+  std::vector<double> synthetic;
+  const double beams = static_cast<double>(recent_.size() * beams_.size());
+  const PlaceScore score = [&](const Pose& place) { return recent_log_likelihood(place, offsets, synthetic) / beams; };
   return find_ambiguity(poses_, weights_, options_.ambiguity, score);
 }
 

@@ -390,6 +390,7 @@ ParticleFilterOptions trial_filter(const TrialSettings& base, const std::string&
   if (base.search_clusters > 0) f.search_clusters = base.search_clusters;
   if (base.tempering_ess >= 0) f.tempering_ess = base.tempering_ess;
   if (base.tempering_stages >= 0) f.tempering_stages = base.tempering_stages;
+  if (base.settle_after >= 0) f.settle_after = static_cast<size_t>(base.settle_after);
   return f;
 }
 

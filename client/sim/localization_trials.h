@@ -56,12 +56,13 @@ struct TrialSettings {
   // The sensor model's short_beyond for every preset (sensor_model.h); negative: the preset's.
   double short_beyond = -1;
   // Overrides of ParticleFilterOptions for every preset but `seed` (the baseline):
-  // search_updates, tempering_ess and tempering_stages (negative: the preset's),
+  // search_updates, tempering_ess, tempering_stages and settle_after (negative: the preset's),
   // search_candidates and search_clusters (0: the preset's).
   int search_updates = -1;
   size_t search_candidates = 0, search_clusters = 0;
   double tempering_ess = -1;
   int tempering_stages = -1;
+  int settle_after = -1;  // ParticleFilterOptions::settle_after (negative: the preset's)
 };
 
 // A global trial's outcome: within bounds and staying so to the last update, with one

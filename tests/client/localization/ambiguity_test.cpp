@@ -171,14 +171,16 @@ Map two_rooms(bool same) {
   return m;
 }
 
-// Global localization (robust preset, uniform cloud, compass) in room A for 8 updates.
-std::unique_ptr<ParticleFilter> localize_in_room_a(const Map& m, Pose& truth) {
+// Global localization (robust preset, uniform cloud, compass) in room A for 8 updates;
+// settle_after: ParticleFilterOptions::settle_after.
+std::unique_ptr<ParticleFilter> localize_in_room_a(const Map& m, Pose& truth, size_t settle_after = 0) {
   const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
   LaserSimulator laser(world, {}, 21);
   WanderDriver driver(world, {5.5, 1.5, 0.4}, {}, 22);
   ParticleFilterOptions o = ParticleFilterOptions::robust();
   o.particles = 4000;
   o.seed = 23;
+  o.settle_after = settle_after;
   auto f = std::make_unique<ParticleFilter>(m, o);
   truth = driver.pose();
   f->init_global(truth.theta);
@@ -208,6 +210,36 @@ TEST(Ambiguity, IdenticalRoomsAreAmbiguous) {
   }
   EXPECT_TRUE(at_truth);
   EXPECT_TRUE(at_copy);
+}
+
+// Settling on the eight scans keeps both identical rooms (they explain the scans alike),
+// each at the truth's pose in it, and the verdict says so.
+TEST(Ambiguity, SettlingKeepsIdenticalRoomsBoth) {
+  Pose truth;
+  const auto f = localize_in_room_a(two_rooms(true), truth, 8);
+  const Ambiguity a = f->ambiguity();
+  ASSERT_TRUE(a.ambiguous());
+  bool at_truth = false, at_copy = false;
+  for (const Pose& p : a.places) {
+    at_truth = at_truth || distance(p, truth) < 0.1;
+    at_copy = at_copy || distance(p, {truth.x + 12, truth.y, truth.theta}) < 0.1;
+  }
+  EXPECT_TRUE(at_truth);
+  EXPECT_TRUE(at_copy);
+  for (double w : a.weights) EXPECT_GT(w, 0.3);  // shared, not one room's lucky lump
+}
+
+// Where room B's short wall is elsewhere, settling leaves one place, the true one, and
+// a cloud already converged on it.
+TEST(Ambiguity, SettlingLeavesOnePlaceWhereRoomsDiffer) {
+  Pose truth;
+  const auto f = localize_in_room_a(two_rooms(false), truth, 8);
+  const Ambiguity a = f->ambiguity();
+  EXPECT_FALSE(a.ambiguous());
+  const PoseEstimate e = f->estimate();
+  EXPECT_LT(distance(e.pose, truth), 0.1);
+  EXPECT_LT(std::fabs(angle_diff(e.pose.theta, truth.theta)), deg2rad(1.0));
+  EXPECT_LT(e.spread_xy, 0.1);
 }
 
 TEST(Ambiguity, RoomsThatDifferAreNot) {
