@@ -124,7 +124,11 @@ start() {
     [ "$free" -ge 400 ] || die "only $free MiB free for $DATA, a new instance needs about 400 MiB"
     rm -rf "$DATA"
     # --skip-test-db: no anonymous accounts (SPEC 9).
-    mariadb-install-db --no-defaults --datadir="$DATA" --user="$ME" \
+    # A private tmpdir: instances started at once (the test fixtures) shared /tmp, and one
+    # bootstrap failed on a temporary table another removed ("Unknown table
+    # mysql.tmp_user_sys").
+    mkdir -p "$HOME_DIR/tmp"
+    mariadb-install-db --no-defaults --datadir="$DATA" --user="$ME" --tmpdir="$HOME_DIR/tmp" \
       --auth-root-authentication-method=socket --skip-test-db >"$HOME_DIR/install.log" 2>&1 \
       || { LOG="$HOME_DIR/install.log" start_failed "mariadb-install-db failed, see $HOME_DIR/install.log"; }
   fi
@@ -132,7 +136,8 @@ start() {
   # --max-connections: every robot holds its own connection (SPEC 4), so the default 151
   # refuses the 152nd robot; 1100 leaves room for a fleet of 1000 plus servers, operators
   # and tools.
-  "$mariadbd" --no-defaults --user="$ME" --datadir="$DATA" --socket="$SOCK" \
+  mkdir -p "$HOME_DIR/tmp"
+  "$mariadbd" --no-defaults --user="$ME" --datadir="$DATA" --socket="$SOCK" --tmpdir="$HOME_DIR/tmp" \
     --port="$PORT" --bind-address=127.0.0.1 --skip-name-resolve \
     --pid-file="$PIDF" --log-error="$LOG" \
     --character-set-server=utf8mb4 --collation-server=utf8mb4_unicode_ci \
