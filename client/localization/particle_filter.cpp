@@ -189,16 +189,19 @@ const GlobalSearch& ParticleFilter::global_search() {
   return *search_;
 }
 
+StitchedScan ParticleFilter::stitch(const std::vector<Scan>& scans, size_t max_points) const {
+  std::vector<const std::vector<double>*> ranges;
+  std::vector<Odometry> odometry;
+  for (size_t k = 0; k < scans.size(); ++k) {
+    ranges.push_back(&scans[k].ranges);
+    odometry.push_back(k > 0 ? stitching_step(scans[k - 1], scans[k]) : scans[k].since_previous);
+  }
+  return stitch_scans(ranges, odometry, beams_, options_.laser.rmax, max_points);
+}
+
 bool ParticleFilter::reseed_from_search(double compass) {
   global_search();
-  std::vector<const std::vector<double>*> scans;
-  std::vector<Odometry> odometry;
-  for (size_t k = 0; k < history_.size(); ++k) {
-    const Scan& h = history_[k];
-    scans.push_back(&h.ranges);
-    odometry.push_back(k > 0 ? stitching_step(history_[k - 1], h) : h.since_previous);
-  }
-  const StitchedScan stitched = stitch_scans(scans, odometry, beams_, options_.laser.rmax, options_.search_points);
+  const StitchedScan stitched = stitch(history_, options_.search_points);
   if (stitched.ranges.empty()) return false;
   const std::vector<Pose>& at = stitched.poses;
   std::vector<Candidate> found = search_->search(stitched.ranges, stitched.angles, std::numeric_limits<double>::infinity(), compass,
@@ -236,13 +239,7 @@ bool ParticleFilter::reseed_from_search(double compass) {
 
 void ParticleFilter::settle(double compass) {
   if (recent_.empty()) return;
-  std::vector<const std::vector<double>*> scans;
-  std::vector<Odometry> odometry;
-  for (size_t k = 0; k < recent_.size(); ++k) {
-    scans.push_back(&recent_[k].ranges);
-    odometry.push_back(k > 0 ? stitching_step(recent_[k - 1], recent_[k]) : recent_[k].since_previous);
-  }
-  const StitchedScan stitched = stitch_scans(scans, odometry, beams_, options_.laser.rmax, options_.settle_points);
+  const StitchedScan stitched = stitch(recent_, options_.settle_points);
   if (stitched.ranges.empty()) return;
   std::vector<Candidate> found = global_search().search(stitched.ranges, stitched.angles,
                                                         std::numeric_limits<double>::infinity(), compass,
@@ -250,7 +247,9 @@ void ParticleFilter::settle(double compass) {
   // The cloud's own places compete with the search's (its grid may fall between them).
   for (const Pose& p : find_ambiguity(poses_, weights_, options_.ambiguity).places) found.push_back({p, 0});
   if (found.empty()) return;
-  const std::vector<Odometry> offsets = recent_offsets();
+  // Each scan's pose from the latest, as stitched (recent_offsets() would stitch again).
+  std::vector<Odometry> offsets;
+  for (const Pose& p : stitched.poses) offsets.push_back({p.x, p.y, p.theta});
   const auto score_with = [&](std::vector<double>& synthetic, const Pose& place) {
     return recent_log_likelihood(place, offsets, synthetic);
   };

@@ -64,6 +64,7 @@
 #include "client/localization/pose.h"
 #include "client/localization/resampling.h"
 #include "client/localization/sensor_model.h"
+#include "client/localization/stitched_scan.h"
 #include "common/map/map.h"
 #include "common/raycast/ray_caster.h"
 
@@ -251,6 +252,8 @@ class ParticleFilter {
   // turn corrected by the compass readings and, turning in place, by the scans.
   struct Scan;
   Odometry stitching_step(const Scan& before, const Scan& after) const;
+  // Scans (history_ or recent_) stitched into the latest one's frame, at most max_points.
+  StitchedScan stitch(const std::vector<Scan>& scans, size_t max_points) const;
   // Weights from log-likelihoods (tempered), resampling and roughening when due; returns
   // the phi applied, at most `most`.
   double weigh(double most);
