@@ -148,6 +148,14 @@ int main(int argc, char** argv) {
                  "update after which every scan since init is searched at once and the cloud settles on the best "
                  "places, for every preset but seed (0: never; default: the preset's)")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--search-sigma", s.search_sigma,
+                 "the global search's likelihood field: metres of tolerance, for every preset but seed (default: the "
+                 "preset's)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--search-max-penalty", s.search_max_penalty,
+                 "the likelihood field's floor per point (log-likelihood), for every preset but seed (default: the "
+                 "preset's)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_option("--short-beyond", s.short_beyond,
@@ -166,6 +174,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   bool per_trial = false;
   app.add_flag("--per-trial", per_trial, "a line per global trial: start pose, outcome, final error");
+  app.add_flag("--explain", s.explain,
+               "after each global trial out of bounds at the end: whether the scans favour the estimate or the truth "
+               "(each refined; a wrong place that fits better is the model's failure, not the filter's)");
   std::string csv;
   app.add_option("--csv", csv,
                  "write a row per global trial to this file (map, config, seed, trial, start, outcome, updates, "

@@ -199,17 +199,19 @@ void RobotClient::fetch() {
   last_poll_ = Clock::now();
   ++polls_;
   std::erase_if(due_, [&](const auto& d) { return last_poll_ - d.second > kForgetDue; });
-  // An answer counts as taken once it is handed over (inbox_, last_answer_); its delete
-  // is repeated until it committed, also across a lost connection or a rollback (1213),
-  // so that none is handed over twice and none stays in sa.
+  // An answer counts as taken once it is handed over (inbox_); its delete is repeated
+  // until it committed, also across a lost connection or a rollback (1213), so that none
+  // is handed over twice and none stays in sa. What is left in sa_mine after those deletes
+  // is new, whatever its id: on a Galera cluster, servers on two nodes number their
+  // answers from each node's own counter (wsrep_auto_increment_control), and an answer
+  // with a lower id can commit after one with a higher id was read.
   std::vector<unsigned long long> acks;
   with_connection([&](RobotChannel& ch) {
     while (!unremoved_.empty()) {
       ch.remove(unremoved_.back());
       unremoved_.pop_back();
     }
-    for (ReceivedAnswer& a : ch.answers(last_answer_, 1000)) {
-      last_answer_ = a.id;
+    for (ReceivedAnswer& a : ch.answers(1000)) {
       unremoved_.push_back(a.id);
       if (a.request_id) due_.erase(*a.request_id);
       const std::optional<AnswerOp> op = parse_answer_op(a.op);

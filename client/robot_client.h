@@ -117,7 +117,6 @@ class RobotClient {
   unsigned long long connection_id_ = 0;  // of the connection in use (or lost last), on hosts_[host_]
   std::optional<unsigned long long> found_at_connect_;  // request_after(last_request_) on connecting
   std::deque<ReceivedAnswer> inbox_;
-  unsigned long long last_answer_ = 0;
   std::optional<unsigned> robot_id_;
   std::atomic<size_t> reconnects_{0};
   WaitPolicy wait_;

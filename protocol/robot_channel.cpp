@@ -15,10 +15,9 @@ unsigned long long RobotChannel::send(RequestOp op, const Json& params, const st
   return q.execute().insert_id();
 }
 
-std::vector<ReceivedAnswer> RobotChannel::answers(unsigned long long after, size_t limit) {
+std::vector<ReceivedAnswer> RobotChannel::answers(size_t limit) {
   mysqlpp::Query q = c_.query();
-  q << "SELECT id, robot_id, request_id, op, params, payload FROM sa_mine WHERE id > " << after << " ORDER BY id LIMIT "
-    << limit;
+  q << "SELECT id, robot_id, request_id, op, params, payload FROM sa_mine ORDER BY id LIMIT " << limit;
   std::vector<ReceivedAnswer> out;
   for (const mysqlpp::Row& r : q.store()) {
     ReceivedAnswer a;

@@ -26,8 +26,9 @@ class RobotChannel {
   // The new request's id.
   unsigned long long send(RequestOp op, const Json& params, const std::optional<std::string>& payload,
                           std::optional<unsigned> robot_id);
-  // Answers with id > after, in id order (at most limit).
-  std::vector<ReceivedAnswer> answers(unsigned long long after, size_t limit);
+  // The answers in sa_mine, in id order (at most limit). Not "after the last id read":
+  // on a cluster an answer with a lower id can commit later (RobotClient::fetch).
+  std::vector<ReceivedAnswer> answers(size_t limit);
   void remove(unsigned long long answer_id);
 
   // The highest id of this account's requests above `after` that the database holds,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -547,13 +548,17 @@ double ParticleFilter::recent_log_likelihood(const Pose& place) const {
   return recent_log_likelihood(place, recent_offsets(), synthetic);
 }
 
+PlaceScore ParticleFilter::recent_fit() const {
+  const double beams = static_cast<double>(std::max<size_t>(1, recent_.size() * beams_.size()));
+  auto synthetic = std::make_shared<std::vector<double>>();
+  return [this, offsets = recent_offsets(), synthetic, beams](const Pose& place) {
+    return recent_log_likelihood(place, offsets, *synthetic) / beams;
+  };
+}
+
 Ambiguity ParticleFilter::ambiguity(AmbiguityRule rule) const {
   if (rule == AmbiguityRule::Weight || recent_.empty()) return find_ambiguity(poses_, weights_, options_.ambiguity);
-  const std::vector<Odometry> offsets = recent_offsets();
-  std::vector<double> synthetic;
-  const double beams = static_cast<double>(recent_.size() * beams_.size());
-  const PlaceScore score = [&](const Pose& place) { return recent_log_likelihood(place, offsets, synthetic) / beams; };
-  return find_ambiguity(poses_, weights_, options_.ambiguity, score);
+  return find_ambiguity(poses_, weights_, options_.ambiguity, recent_fit());
 }
 
 PoseEstimate ParticleFilter::estimate() const {

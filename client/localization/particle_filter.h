@@ -229,6 +229,11 @@ class ParticleFilter {
   // from the latest stitched as for the global search) seen from `place`, the latest
   // scan's pose: what settling ranks places by, and (per beam) the Likelihood rule.
   double recent_log_likelihood(const Pose& place) const;
+  // The same per beam, as a score that stitches the recent scans once for every place it
+  // is asked about: the Likelihood rule's score, and the trials' (localization_trials.h)
+  // for telling a wrong place the scans favour from a truth the filter lost. Valid while
+  // the filter is not updated; not thread-safe (one buffer of cast rays).
+  PlaceScore recent_fit() const;
 
  private:
   // The largest phi <= most that keeps tempering_ess of the particles effective.

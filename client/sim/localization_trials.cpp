@@ -11,6 +11,7 @@
 #include "client/sim/generated_maps.h"
 #include "client/localization/free_space.h"
 #include "client/localization/global_search.h"
+#include "client/localization/place_refinement.h"
 #include "common/io/read_map_file.h"
 
 namespace fleetmap::localization {
@@ -62,6 +63,9 @@ struct GlobalRun {
   size_t places = 0;     // of the last update's ambiguity verdict (the options' rule)
   size_t places_weight_rule = 0;  // of the Weight rule's, on the same cloud
   double runner_up_gap = NAN, heaviest_gap = NAN;  // the Likelihood rule's (ambiguity.h)
+  double truth_fit = NAN, estimate_fit = NAN;      // TrialSettings::explain (GlobalTrial)
+  int search_rank = -2;                            // likewise
+  size_t beams_hidden = 0, beams_seen = 0;         // likewise: beams a person stopped, of all
 };
 
 bool within_bounds(const Pose& e, const Pose& truth) {
@@ -85,13 +89,30 @@ GlobalRun run_global_localization(const Map& map, std::shared_ptr<const RayCaste
   Pose truth = start;
   pf.init_global(compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
   GlobalRun run;
+  const Candidate* searched = nullptr;  // the last search's candidates seen (explain)
   for (int u = 1; u <= max_updates; ++u) {
     if (u > 1) {
       const DriveStep st = driver.step();
       truth = st.truth;
       pf.predict(st.odometry);
     }
-    pf.update(laser.scan(truth), compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
+    const std::vector<double> ranges = laser.scan(truth);
+    if (s.explain && s.laser.people > 0) {
+      // Beams a person stopped: well short of the wall behind (the noise is 0.05 m).
+      const std::vector<double> bare = laser.true_scan(truth);
+      for (size_t j = 0; j < ranges.size(); ++j) run.beams_hidden += ranges[j] < bare[j] - 0.3;
+      run.beams_seen += ranges.size();
+    }
+    pf.update(ranges, compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
+    if (s.explain && !pf.last_candidates().empty() && pf.last_candidates().data() != searched) {
+      // A new search this update: its candidates are poses of the scan just taken.
+      searched = pf.last_candidates().data();
+      const std::vector<Candidate>& c = pf.last_candidates();
+      const auto near = std::find_if(c.begin(), c.end(), [&](const Candidate& k) {
+        return distance(k.pose, truth) < 0.5 && std::fabs(angle_diff(k.pose.theta, truth.theta)) < deg2rad(5.0);
+      });
+      run.search_rank = near == c.end() ? -1 : static_cast<int>(near - c.begin());
+    }
     const PoseEstimate e = pf.estimate();
     run.updates = u;
     run.error = distance(e.pose, truth);
@@ -106,6 +127,11 @@ GlobalRun run_global_localization(const Map& map, std::shared_ptr<const RayCaste
   run.runner_up_gap = a.runner_up_gap;
   run.heaviest_gap = a.heaviest_gap;
   run.places_weight_rule = pf.ambiguity(AmbiguityRule::Weight).places.size();
+  if (s.explain && !run.within) {
+    const PlaceScore fit = pf.recent_fit();
+    run.truth_fit = refine_place(truth, fit).score;
+    run.estimate_fit = refine_place(pf.estimate().pose, fit).score;
+  }
   return run;
 }
 
@@ -140,6 +166,11 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
     g.runner_up_gap = run.runner_up_gap;
     g.heaviest_gap = run.heaviest_gap;
     g.final_error = run.error;
+    g.truth_fit = run.truth_fit;
+    g.estimate_fit = run.estimate_fit;
+    g.search_rank = run.search_rank;
+    res.beams_hidden += run.beams_hidden;
+    res.beams_seen += run.beams_seen;
     g.seconds = seconds_since(trial_t0);
     res.trial_seconds.push_back(g.seconds);
     const auto outcome = [&](size_t places) {
@@ -159,6 +190,17 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
     res.ambiguous_weight_rule += g.outcome_weight_rule == TrialOutcome::Ambiguous;
     res.wrong_weight_rule += g.outcome_weight_rule == TrialOutcome::Wrong;
     res.final_error.push_back(run.error);
+    switch (favoured(g, kFitTie)) {
+      case Favoured::Estimate: ++res.favour_estimate; break;
+      case Favoured::Tie: ++res.favour_tie; break;
+      case Favoured::Truth: ++res.favour_truth; break;
+      case Favoured::Unexplained: break;
+    }
+    if (s.explain && !run.within) {
+      if (run.search_rank < 0) ++res.truth_not_found;
+      else if (static_cast<size_t>(run.search_rank) < fo.search_clusters) ++res.truth_in_clusters;
+      else ++res.truth_ranked_out;
+    }
     res.per_trial.push_back(g);
     if (s.per_trial)
       std::fprintf(s.per_trial,
@@ -168,6 +210,9 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
                    run.first_within > 0 ? ("within from update " + std::to_string(run.first_within)).c_str() : "not within",
                    to_string(g.outcome), run.error, run.places, to_string(g.outcome_weight_rule), run.places_weight_rule,
                    run.runner_up_gap, run.heaviest_gap);
+    if (s.per_trial && !std::isnan(g.truth_fit))
+      std::fprintf(s.per_trial, "    fit per beam: truth %.4f, estimate %.4f: the scans favour %s; truth at rank %d of the last search\n",
+                   g.truth_fit, g.estimate_fit, to_string(favoured(g, kFitTie)), g.search_rank);
   }
   res.seconds = seconds_since(t0);
   return res;
@@ -391,6 +436,8 @@ ParticleFilterOptions trial_filter(const TrialSettings& base, const std::string&
   if (base.tempering_ess >= 0) f.tempering_ess = base.tempering_ess;
   if (base.tempering_stages >= 0) f.tempering_stages = base.tempering_stages;
   if (base.settle_after >= 0) f.settle_after = static_cast<size_t>(base.settle_after);
+  if (base.search_sigma > 0) f.search.sigma = base.search_sigma;
+  if (base.search_max_penalty > 0) f.search.max_penalty = base.search_max_penalty;
   return f;
 }
 
@@ -436,6 +483,21 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
                  "(ambiguity.h) on the same trials: success %d, ambiguous %d, wrong %d\n",
                  g.success, g.ambiguous, g.wrong, g.trials, g.success_weight_rule, g.ambiguous_weight_rule,
                  g.wrong_weight_rule);
+    if (s.explain)
+      std::fprintf(out,
+                   "  out of bounds at the end: %d; the scans favour the estimate in %d (a wrong place fits them "
+                   "better: no filter on this model picks the truth), the truth in %d (the filter lost it), "
+                   "neither (within %.3f per beam) in %d\n",
+                   g.favour_estimate + g.favour_tie + g.favour_truth, g.favour_estimate, g.favour_truth, kFitTie,
+                   g.favour_tie);
+    if (s.explain && s.laser.people > 0)
+      std::fprintf(out, "  people stopped %.1f %% of the beams (0.3 m or more short of the wall behind)\n",
+                   100.0 * g.beams_hidden / std::max<size_t>(1, g.beams_seen));
+    if (s.explain && f.global_search)
+      std::fprintf(out,
+                   "  of those, the last global search had the truth among the %zu candidates that get particles in "
+                   "%d, ranked lower on cast rays in %d, not among its %zu candidates in %d\n",
+                   f.search_clusters, g.truth_in_clusters, g.truth_ranked_out, f.search_candidates, g.truth_not_found);
     std::fflush(out);
   }
   if (tracking) {
@@ -453,6 +515,23 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
     }
   }
   return result;
+}
+
+Favoured favoured(const GlobalTrial& t, double tie) {
+  if (std::isnan(t.truth_fit) || std::isnan(t.estimate_fit)) return Favoured::Unexplained;
+  if (t.estimate_fit > t.truth_fit + tie) return Favoured::Estimate;
+  if (t.truth_fit > t.estimate_fit + tie) return Favoured::Truth;
+  return Favoured::Tie;
+}
+
+const char* to_string(Favoured f) {
+  switch (f) {
+    case Favoured::Estimate: return "the estimate";
+    case Favoured::Tie: return "neither";
+    case Favoured::Truth: return "the truth";
+    case Favoured::Unexplained: return "-";
+  }
+  return "?";
 }
 
 const char* to_string(TrialOutcome o) {
@@ -494,13 +573,15 @@ void print_table(std::FILE* out, const std::vector<TableRow>& rows) {
 
 void write_trials_csv(std::FILE* out, const std::vector<TableRow>& rows, uint64_t seed) {
   std::fprintf(out, "map,config,seed,trial,start_x,start_y,start_theta_deg,outcome,updates,within_from,places,"
-                    "final_error_m,seconds,outcome_weight_rule,places_weight_rule,runner_up_gap,heaviest_gap\n");
+                    "final_error_m,seconds,outcome_weight_rule,places_weight_rule,runner_up_gap,heaviest_gap,truth_fit,"
+                    "estimate_fit,search_rank\n");
   for (const TableRow& r : rows)
     for (const GlobalTrial& t : r.result.per_trial)
-      std::fprintf(out, "%s,%s,%llu,%d,%.3f,%.3f,%.2f,%s,%d,%d,%zu,%.3f,%.3f,%s,%zu,%.4f,%.4f\n", r.map.c_str(),
+      std::fprintf(out, "%s,%s,%llu,%d,%.3f,%.3f,%.2f,%s,%d,%d,%zu,%.3f,%.3f,%s,%zu,%.4f,%.4f,%.4f,%.4f,%d\n", r.map.c_str(),
                    r.config.c_str(), static_cast<unsigned long long>(seed), t.trial, t.start.x, t.start.y,
                    rad2deg(t.start.theta), to_string(t.outcome), t.updates, t.within_from, t.places, t.final_error,
-                   t.seconds, to_string(t.outcome_weight_rule), t.places_weight_rule, t.runner_up_gap, t.heaviest_gap);
+                   t.seconds, to_string(t.outcome_weight_rule), t.places_weight_rule, t.runner_up_gap, t.heaviest_gap,
+                   t.truth_fit, t.estimate_fit, t.search_rank);
 }
 
 }  // namespace fleetmap::localization

@@ -63,6 +63,12 @@ struct TrialSettings {
   double tempering_ess = -1;
   int tempering_stages = -1;
   int settle_after = -1;  // ParticleFilterOptions::settle_after (negative: the preset's)
+  // The likelihood field's sigma and per-point floor (GlobalSearchOptions; negative: the preset's).
+  double search_sigma = -1, search_max_penalty = -1;
+  // After each global trial whose estimate ends out of bounds: whom the scans favour, the
+  // truth or the estimate (GlobalTrial::truth_fit), to tell the model's failures (no
+  // filter on it could pick the truth) from the filter's (it lost a better place).
+  bool explain = false;
 };
 
 // A global trial's outcome: within bounds and staying so to the last update, with one
@@ -86,13 +92,35 @@ struct GlobalTrial {
   double runner_up_gap = 0, heaviest_gap = 0;
   double final_error = 0;  // metres
   double seconds = 0;      // computation of this localization
+  // TrialSettings::explain, for an estimate out of bounds at the end (NaN otherwise): the
+  // log-likelihood per beam of the recent scans (ParticleFilter::recent_fit) at the truth
+  // and at the estimate, each refined to its best pose nearby (place_refinement.h).
+  double truth_fit = NAN, estimate_fit = NAN;
+  // TrialSettings::explain, every trial: the rank, in the last global search's candidates
+  // reranked on cast rays (ParticleFilter::last_candidates), of the first within 0.5 m
+  // and 5 degrees of the truth at that search; -1: none was; -2: no search.
+  int search_rank = -2;
 };
+
+// Whom the scans favour in an explained trial: the estimate by more than `tie` per beam
+// (a wrong place explains them better: the model's failure), the truth by more (the
+// filter's), or neither.
+enum class Favoured { Estimate, Tie, Truth, Unexplained };
+Favoured favoured(const GlobalTrial& t, double tie);
+const char* to_string(Favoured f);
 
 struct GlobalResult {
   // converged: within bounds at the end, whether or not ambiguous (the figure before the
   // ambiguity verdict); success + ambiguous + wrong = trials.
   int trials = 0, converged = 0, success = 0, ambiguous = 0, wrong = 0;
   int success_weight_rule = 0, ambiguous_weight_rule = 0, wrong_weight_rule = 0;  // ambiguity.h's Weight rule
+  // TrialSettings::explain: the trials out of bounds at the end, by whom the scans favour
+  // (favoured(), tie kFitTie).
+  int favour_estimate = 0, favour_tie = 0, favour_truth = 0;
+  // Of the trials out of bounds, by where the last search put the truth: among the first
+  // search_clusters candidates (it got particles), ranked lower, or not found at all.
+  int truth_in_clusters = 0, truth_ranked_out = 0, truth_not_found = 0;
+  size_t beams_hidden = 0, beams_seen = 0;  // explain, with people: beams a person stopped, of all
   std::vector<GlobalTrial> per_trial;
   std::vector<int> first_within;    // update at which the estimate first got within bounds
   std::vector<double> final_error;  // metres, per trial
@@ -118,6 +146,9 @@ struct KidnapResult {
   int false_alarms = 0;              // "lost" before a kidnap, or during the drive without one
   double driven_without_kidnap = 0;  // metres of driving in which a "lost" is a false alarm
 };
+
+// Per beam: closer fits than this are a tie (settling's measurement, docs/localization.md).
+inline constexpr double kFitTie = 0.002;
 
 GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s);
 TrackResult run_tracking_trial(const Map& map, std::shared_ptr<const RayCaster> world, const TrialSettings& s,

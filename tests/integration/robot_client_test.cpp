@@ -1,5 +1,6 @@
 // The robot client library against the real server: handshake, zoom-map refresh by
-// distance and by time-out, pushed operations acknowledged, a database restart survived.
+// distance and by time-out, pushed operations acknowledged, answers taken whatever the
+// order of their ids, a database restart survived.
 #include <functional>
 #include <thread>
 
@@ -111,6 +112,31 @@ TEST_F(RobotClientTest, AliveTimerKeepsTheRobotFromBeingLost) {
   client.stop_alive();
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));
   EXPECT_EQ(scalar("SELECT state = 'lost' FROM robots WHERE db_user = 'client_r1'"), 1);
+}
+
+// On a Galera cluster, servers on two nodes number their answers from each node's own
+// counter: an answer with a lower id can commit after one with a higher id was read
+// (RobotClient::fetch). Here the two answers are written by hand, the higher id first.
+TEST_F(RobotClientTest, TakesAnAnswerThatCommitsAfterOneWithAHigherId) {
+  RobotClient client(settings_);
+  const RobotSession s = client.ready(1);
+  server_.reset();  // nobody else answers
+  const long long top = scalar("SELECT MAX(id) FROM sa") + 100;
+  auto answer = [&](long long id, const std::string& code) {
+    auto c = admin();
+    mysqlpp::Query q = c->query();
+    q << "INSERT INTO sa (id, robot_id, db_user, op, params) VALUES (" << id << ", " << s.robot_id
+      << ", 'client_r1', 'Error', " << mysqlpp::quote << Json{{"code", code}}.dump() << ")";
+    q.execute();
+  };
+  auto has_code = [](const std::string& code) {
+    return [code](const ReceivedAnswer& a) { return a.params.value("code", "") == code; };
+  };
+  answer(top, "higher");
+  ASSERT_TRUE(wait_for(client, has_code("higher")));
+  answer(top - 50, "lower");
+  EXPECT_TRUE(wait_for(client, has_code("lower"))) << "the later answer with the lower id was never taken";
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM sa WHERE db_user = 'client_r1' AND sentinel = 0"), 0);
 }
 
 // The client polls sa_mine on its WaitPolicy's schedule (protocol/wait_policy.h), not on

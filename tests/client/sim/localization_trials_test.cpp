@@ -1,0 +1,88 @@
+// The trials' explanation of their failures (localization_trials.h, TrialSettings::explain):
+// whom the scans favour, where the last search put the truth, and how many beams people hid.
+#include "client/sim/localization_trials.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "common/raycast/grid_ray_caster.h"
+
+namespace fleetmap::localization {
+namespace {
+
+struct Trials {
+  Map map = load_map_file("gen:offices");
+  std::shared_ptr<const RayCaster> world;
+  TrialSettings s;
+  explicit Trials(const std::string& config) {
+    s.filter = preset(config).value();
+    world = std::make_shared<GridRayCaster>(map, s.filter.laser);
+    s.filter.threads = 1;
+    s.trials = 4;
+    s.seed = 11;
+    s.explain = true;
+  }
+};
+
+TEST(LocalizationTrials, ExplainScoresTheTruthAndTheEstimateOfEveryTrialOutOfBounds) {
+  // The seed's filter with 100 particles over a floor of offices, three updates: most
+  // trials end far from the truth, most on a place that explains the scans worse.
+  Trials t("seed");
+  t.s.filter.particles = 100;
+  t.s.updates = 3;
+  t.s.look_around = 0;
+  const GlobalResult r = run_global_trials(t.map, t.world, t.s);
+  int out_of_bounds = 0;
+  int far_and_worse = 0;
+  for (const GlobalTrial& g : r.per_trial) {
+    EXPECT_EQ(g.search_rank, -2) << "the seed's filter never searches";
+    if (std::isnan(g.truth_fit)) continue;
+    ++out_of_bounds;
+    EXPECT_FALSE(std::isnan(g.estimate_fit));
+    // favoured() reads the two fits against the tie margin.
+    const Favoured f = favoured(g, kFitTie);
+    if (g.truth_fit > g.estimate_fit + kFitTie) EXPECT_EQ(f, Favoured::Truth) << "trial " << g.trial;
+    else if (g.estimate_fit > g.truth_fit + kFitTie) EXPECT_EQ(f, Favoured::Estimate) << "trial " << g.trial;
+    else EXPECT_EQ(f, Favoured::Tie) << "trial " << g.trial;
+    // Per beam, on noise of 0.05 m with no people, the truth's best pose scores near the
+    // model's peak; most places metres away do not (an identical office may).
+    if (g.final_error > 2 && f == Favoured::Truth) ++far_and_worse;
+  }
+  ASSERT_GE(out_of_bounds, 2) << "the starved filter should fail most trials";
+  EXPECT_GE(far_and_worse, 1) << "a far-off estimate that explains the scans worse than the truth";
+  EXPECT_EQ(r.favour_estimate + r.favour_tie + r.favour_truth, out_of_bounds);
+  EXPECT_EQ(r.truth_in_clusters + r.truth_ranked_out + r.truth_not_found, out_of_bounds);
+  EXPECT_EQ(r.beams_seen, 0u) << "no people, nothing counted";
+}
+
+TEST(LocalizationTrials, ExplainFindsTheTruthAmongTheSearchsFirstCandidatesWhereItLocalizes) {
+  Trials t("fast");
+  const GlobalResult r = run_global_trials(t.map, t.world, t.s);
+  int successes = 0;
+  for (const GlobalTrial& g : r.per_trial) {
+    if (g.outcome != TrialOutcome::Success) continue;
+    ++successes;
+    // The search's candidates are poses of the scan it searched: the truth at that update.
+    EXPECT_GE(g.search_rank, 0) << "trial " << g.trial;
+    EXPECT_LT(g.search_rank, static_cast<int>(t.s.filter.search_clusters)) << "trial " << g.trial;
+    EXPECT_TRUE(std::isnan(g.truth_fit)) << "a trial within bounds needs no explanation";
+  }
+  EXPECT_GE(successes, 3);
+}
+
+TEST(LocalizationTrials, ExplainCountsTheBeamsPeopleHide) {
+  Trials t("fast");
+  t.s.trials = 2;
+  t.s.laser.people = 5;
+  const GlobalResult r = run_global_trials(t.map, t.world, t.s);
+  ASSERT_EQ(r.beams_seen, 2u * 10 * 131);  // two trials of ten scans
+  const double hidden = static_cast<double>(r.beams_hidden) / r.beams_seen;
+  // Five people of 0.4-0.6 m within 15 m, in view, hide some beams but not most of them.
+  EXPECT_GT(hidden, 0.02);
+  EXPECT_LT(hidden, 0.8);
+}
+
+}  // namespace
+}  // namespace fleetmap::localization
