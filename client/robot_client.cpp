@@ -33,12 +33,18 @@ std::chrono::steady_clock::duration from_ms(double ms) {
   return std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double, std::milli>(ms));
 }
 
-// A transaction the database rolled back whole, to be sent again: a deadlock, or on a
-// Galera cluster a certification conflict with a commit on another node (docs/galera.md).
+// A statement the database rolled back whole, to be sent again: a deadlock, or on a
+// Galera cluster a certification conflict with a commit on another node (1213); a lock
+// wait past kLockWaitS (1205: autocommit, so the statement was the whole transaction).
 bool rolled_back(const mysqlpp::Exception& e) {
   const auto* bq = dynamic_cast<const mysqlpp::BadQuery*>(&e);
-  return bq && bq->errnum() == 1213;
+  return bq && (bq->errnum() == 1213 || bq->errnum() == 1205);
 }
+
+// How long one robot statement may wait on a row lock before it is sent again. The
+// server's batch holds a robot's row for milliseconds; a longer wait is a stall, and on
+// a Galera cluster a stall of every node (docs/galera.md, "A robot's lock wait").
+constexpr unsigned kLockWaitS = 2;
 
 // The node is gone or will not serve: move to the next host. 2000..2999: the client lost
 // the server; 1047: a Galera node that is not primary or not synced ("WSREP has not yet
@@ -105,6 +111,7 @@ void RobotClient::open_connection() {
         spdlog::warn("robot client: {}; requests in doubt after a lost connection will be sent again", e.what());
       }
       ch.causal_reads(false);
+      ch.limit_lock_waits(kLockWaitS);
       connection_id_ = ch.connection_id();
       conn_ = std::move(c);
       host_ = i;

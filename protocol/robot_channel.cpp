@@ -72,4 +72,10 @@ void RobotChannel::causal_reads(bool on) {
   }
 }
 
+void RobotChannel::limit_lock_waits(unsigned seconds) {
+  mysqlpp::Query q = c_.query();
+  q << "SET SESSION innodb_lock_wait_timeout = " << seconds;
+  q.execute();
+}
+
 }  // namespace fleetmap

@@ -42,6 +42,12 @@ class RobotChannel {
   // the robot sees its own requests and answers. A no-op without Galera.
   void causal_reads(bool on);
 
+  // A statement of this session waits at most `seconds` on a row lock, then fails with
+  // 1205 and is rolled back whole (each robot statement is its own transaction). The
+  // default of 50 s let one robot stall a Galera cluster: a replicated write waiting on
+  // that robot's lock holds up every node (docs/galera.md, "A robot's lock wait").
+  void limit_lock_waits(unsigned seconds);
+
   // This connection's id, and whether a connection of this id still runs on this node
   // (a robot sees its own sessions in the process list). A connection that broke, or that
   // the server ended, may still be committing its last statement there.

@@ -49,6 +49,7 @@ RC=0
 
 fail() { echo "FAIL: $*" >&2; RC=1; }
 cleanup() {
+  stall_watch_stop
   fleet_stop
   servers_stop
   [ "$KEEP" = 1 ] || bash "$CL" stop >/dev/null 2>&1 || true
@@ -70,6 +71,7 @@ mkdir -p "$W"
 DB="$(awk '$1=="name"{print $3; exit}' "$(conf 1)")"
 add_robots "$(conf 1)" "$ROBOTS"
 N1="127.0.0.1:$P" N2="127.0.0.1:$((P + 1))" N3="127.0.0.1:$((P + 2))"
+stall_watch_start
 
 step "floor: one server, one node, $ROBOTS robots for ${PHASE_S} s"
 server_start floor "$(conf 1)" 0/1
@@ -147,5 +149,7 @@ echo "shared / floor: throughput $(ratio "$(field shared throughput_rps)" "$(fie
 echo "cluster / floor: throughput $(ratio "$(field cluster throughput_rps)" "$(field floor throughput_rps)")," \
      "p50 $(ratio "$(field cluster p50_ms)" "$(field floor p50_ms)"), p99 $(ratio "$(field cluster p99_ms)" "$(field floor p99_ms)")" \
      "(same run; the machine is shared, so compare ratios)"
+stall_watch_stop
+[ "$RC" = 0 ] || stalls_seen
 [ "$RC" = 0 ] && echo "PASS" || echo "FAILED (logs in $W)"
 exit "$RC"

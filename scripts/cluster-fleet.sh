@@ -65,5 +65,26 @@ fleet() {  # fleet NAME HOSTS SECONDS [STOPFILE PAUSE_MS]
     ${4:+--stop-file "$4"} ${5:+--pause-ms "$5"} \
     --answer-timeout 40 --log-level "${FLEET_LOG_LEVEL:-warn}" > "$W/$1.out" 2> "$W/$1.err"
 }
+# What a stalled phase was waiting on: every 2 s, each node's statements running 5 s or
+# more (with their state) and Galera's flow-control pause, into $W/stalls.log. A fleet
+# that stops for tens of seconds leaves its cause there (docs/galera.md, "A robot's lock
+# wait"); the drivers print its first lines when a phase fails.
+STALLS=""
+stall_watch_start() {
+  ( while :; do
+      local n rows
+      for n in 1 2 3; do
+        rows="$(bash "$CL" sql "$n" -N -e "SELECT ID, USER, TIME, STATE, LEFT(REPLACE(INFO, '\n', ' '), 120)
+                FROM information_schema.PROCESSLIST WHERE COMMAND <> 'Sleep' AND TIME >= 5" 2>/dev/null)" || continue
+        [ -n "$rows" ] && printf '%s node %s\n%s\n%s\n' "$(date +%T)" "$n" "$rows" \
+          "$(bash "$CL" sql "$n" -N -e "SHOW GLOBAL STATUS LIKE 'wsrep_flow_control_paused'" 2>/dev/null)" >> "$W/stalls.log"
+      done
+      sleep 2
+    done ) &
+  STALLS=$!
+}
+stall_watch_stop() { [ -n "$STALLS" ] && { kill "$STALLS" 2>/dev/null || true; wait "$STALLS" 2>/dev/null || true; }; STALLS=""; }
+stalls_seen() { [ -s "$W/stalls.log" ] && { echo "statements that ran 5 s or more ($W/stalls.log):"; head -40 "$W/stalls.log"; } || true; }
+
 field() { awk -v k="$2" '{for (i = 1; i < NF; i += 2) if ($i == k) print $(i + 1)}' "$W/$1.out"; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (b > 0) printf "%.2f", a / b; else print "-" }'; }

@@ -54,6 +54,9 @@ wsrep_args() {  # wsrep_args N BOOTSTRAP
     --wsrep-sst-method=rsync --wsrep-sst-receive-address="127.0.0.1:$((BASE + 300 + n - 1))"
     # Galera replicates rows: row binlog format, interleaved auto-increment locks.
     --binlog-format=ROW --innodb-autoinc-lock-mode=2 --default-storage-engine=InnoDB
+    # No session waits on a row lock for InnoDB's default 50 s: behind a waiting session a
+    # replicated write can hold up every node (docs/galera.md, "A robot's lock wait").
+    --innodb-lock-wait-timeout=5
   )
   [ "$boot" = 1 ] && a+=(--wsrep-new-cluster)
   printf '%s ' "${a[@]}" ${FLEETMAP_CLUSTER_MYSQLD_ARGS:-}

@@ -139,6 +139,53 @@ TEST_F(RobotClientTest, TakesAnAnswerThatCommitsAfterOneWithAHigherId) {
   EXPECT_EQ(scalar("SELECT COUNT(*) FROM sa WHERE db_user = 'client_r1' AND sentinel = 0"), 0);
 }
 
+// A robot's statement waits on a row lock for seconds, not InnoDB's 50 s: on a Galera
+// cluster a replicated write waiting behind it would stall every node. Here an admin
+// holds the robot's answer row while the robot deletes it: the delete gives up and is
+// sent again until the client's reconnect_for (3 s) runs out, and once the lock is gone
+// it goes through, the answer handed over once.
+TEST_F(RobotClientTest, ALockHeldElsewhereHoldsTheRobotForSecondsOnly) {
+  RobotClient client(settings_, std::chrono::seconds(3));
+  const RobotSession s = client.ready(1);
+  server_.reset();  // nobody else answers
+  {
+    auto c = admin();
+    mysqlpp::Query q = c->query();
+    q << "INSERT INTO sa (robot_id, db_user, op, params) VALUES (" << s.robot_id << ", 'client_r1', 'Error', "
+      << mysqlpp::quote << Json{{"code", "held"}}.dump() << ")";
+    q.execute();
+  }
+  auto holder = admin();
+  holder->query("START TRANSACTION").execute();
+  holder->query("SELECT id FROM sa WHERE db_user = 'client_r1' FOR UPDATE").store();
+
+  size_t handed = 0;
+  auto take = [&] {
+    for (const ReceivedAnswer& a : client.receive()) handed += a.params.value("code", "") == "held";
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+  unsigned errnum = 0;
+  try {
+    for (int i = 0; i < 2000 && errnum == 0; ++i) {
+      take();
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  } catch (const mysqlpp::BadQuery& e) {
+    errnum = e.errnum();
+  }
+  const double waited_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(errnum, 1205u) << "the delete should give up on the held lock";
+  EXPECT_LT(waited_s, 20.0) << "one robot statement waited on a lock like InnoDB's default (50 s)";
+
+  holder->query("ROLLBACK").execute();
+  for (int i = 0; i < 200 && scalar("SELECT COUNT(*) FROM sa WHERE db_user = 'client_r1' AND sentinel = 0") > 0; ++i) {
+    take();
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_EQ(scalar("SELECT COUNT(*) FROM sa WHERE db_user = 'client_r1' AND sentinel = 0"), 0);
+  EXPECT_EQ(handed, 1u) << "the answer whose delete was retried was handed over again";
+}
+
 // The client polls sa_mine on its WaitPolicy's schedule (protocol/wait_policy.h), not on
 // every call: idle, a control loop calling receive() every millisecond costs one poll per
 // idle_ms; with an answer due and no server to answer it, one poll per gap.
