@@ -2,10 +2,13 @@
 // the same run with the seed's parameters (RMAX 15 m, NL 131 beams over 180 degrees,
 // hL 0.3 m) from random poses: the seed's bounding-circle method (SeedRayCaster), the
 // first sweep ("before": SweepRayCaster with 4 m cells, every wall within reach,
-// per-beam kernel) and the fast caster (make_fast_ray_caster's SweepRayCaster: 1 m
-// cells, occlusion-culled lists, batched kernel): rays/s on 1 and 2 threads, ratios,
-// one particle-filter update (NP 6000 poses x NL 131 rays) in Hz, and each structure's
-// memory. Targets on GDC1: >= 150 M rays/s on 2 cores, update >= 200 Hz, structure
+// per-beam kernel), the previous default ("previous": 1 m cells where the map is dense,
+// 32 occluders; --previous-cell, --previous-occluders) and the fast caster
+// (make_fast_ray_caster's SweepRayCaster: cells picked by density, occlusion-culled
+// lists, batched kernel): rays/s on 1 and 2 threads, ratios, one particle-filter update
+// (NP 6000 poses x NL 131 rays) in Hz, and each structure's memory and build time. The
+// sweeps are timed in turns, run after run, so that a change of load touches each
+// alike. Targets on GDC1: >= 150 M rays/s on 2 cores, update >= 200 Hz, structure
 // < 64 MiB; on the campus, no slower than before.
 //
 // The machine is shared: besides wall-clock rates (best of --repeats runs) it prints
@@ -89,16 +92,23 @@ struct Rate {
   double cpu = 0;   // M rays per CPU-second, best run
 };
 
+// Each caster's best of `repeats` runs, the casters taking turns within each run.
+std::vector<Rate> rates(const std::vector<const RayCaster*>& casters, const std::vector<Pose>& poses,
+                        const std::vector<double>& beams, int threads, int repeats) {
+  std::vector<Rate> best(casters.size());
+  const double rays = static_cast<double>(poses.size() * beams.size());
+  for (int r = 0; r < repeats; ++r)
+    for (size_t i = 0; i < casters.size(); ++i) {
+      const Timing t = time_scans(*casters[i], poses, beams, threads);
+      best[i].wall = std::max(best[i].wall, rays / t.wall / 1e6);
+      best[i].cpu = std::max(best[i].cpu, rays / t.cpu / 1e6);
+    }
+  return best;
+}
+
 Rate rate(const RayCaster& rc, const std::vector<Pose>& poses, const std::vector<double>& beams, int threads,
           int repeats) {
-  Rate best;
-  const double rays = static_cast<double>(poses.size() * beams.size());
-  for (int r = 0; r < repeats; ++r) {
-    const Timing t = time_scans(rc, poses, beams, threads);
-    best.wall = std::max(best.wall, rays / t.wall / 1e6);
-    best.cpu = std::max(best.cpu, rays / t.cpu / 1e6);
-  }
-  return best;
+  return rates({&rc}, poses, beams, threads, repeats)[0];
 }
 
 // Single rays (cast) from the poses, one thread: M rays per CPU-second.
@@ -121,18 +131,31 @@ struct Update {
   double hz_median = 0, hz_best = 0, hz_cpu = 0;
 };
 
-// One particle-filter update: NP scans from NP poses on `threads` threads.
-Update filter_update(const RayCaster& rc, const std::vector<Pose>& pf, const std::vector<double>& beams, int threads,
-                     int repeats) {
-  std::vector<double> wall;
-  double cpu_best = 1e300;
-  for (int r = 0; r < std::max(3, 2 * repeats); ++r) {
-    const Timing t = time_scans(rc, pf, beams, threads);
-    wall.push_back(t.wall);
-    cpu_best = std::min(cpu_best, t.cpu);
+// One particle-filter update: NP scans from NP poses on `threads` threads, for each
+// caster, the casters taking turns.
+std::vector<Update> filter_updates(const std::vector<const RayCaster*>& casters, const std::vector<Pose>& pf,
+                                   const std::vector<double>& beams, int threads, int repeats) {
+  std::vector<std::vector<double>> wall(casters.size());
+  std::vector<double> cpu_best(casters.size(), 1e300);
+  for (int r = 0; r < std::max(3, 2 * repeats); ++r)
+    for (size_t i = 0; i < casters.size(); ++i) {
+      const Timing t = time_scans(*casters[i], pf, beams, threads);
+      wall[i].push_back(t.wall);
+      cpu_best[i] = std::min(cpu_best[i], t.cpu);
+    }
+  std::vector<Update> out;
+  for (size_t i = 0; i < casters.size(); ++i) {
+    std::sort(wall[i].begin(), wall[i].end());
+    out.push_back({1 / wall[i][wall[i].size() / 2], 1 / wall[i][0], threads / cpu_best[i]});
   }
-  std::sort(wall.begin(), wall.end());
-  return {1 / wall[wall.size() / 2], 1 / wall[0], threads / cpu_best};
+  return out;
+}
+
+// The cell the default picked before finer cells (docs/ray-casting.md, "The sweep on
+// dense floors"): 1 m where the 4 m lists would average more than 32 entries, else 4 m.
+double previous_default_cell(const Map& map, const RayCasterOptions& opt) {
+  const LaserObstacles obstacles = prepare_laser_obstacles(map, opt.laser_height);
+  return CandidateGrid::estimate_mean_list(obstacles, 4.0, opt.rmax) > 32 ? 1.0 : 4.0;
 }
 
 struct Settings {
@@ -141,15 +164,17 @@ struct Settings {
   int particles = 6000, repeats = 3, threads = 2;
   size_t poses_fast = 30000, poses_seed = 5000;
   double cell = SweepOptions{}.cell;
-  size_t occluders = SweepOptions{}.occluders;
+  double previous_cell = 0;  // 0: previous_default_cell()
+  size_t occluders = SweepOptions{}.occluders, previous_occluders = 32;
   bool alternatives = false;
 };
 
 struct MapResult {
-  Rate fast2, before2;
-  double fast_cpu = 0, before_cpu = 0;
-  Update fast_update, before_update;
-  double fast_mib = 0;
+  Rate fast2, previous2, before2;
+  double fast_cpu = 0, previous_cpu = 0, before_cpu = 0;  // M rays/s, 2 cores CPU-bound
+  Update fast_update, previous_update, before_update;
+  double fast_mib = 0, previous_mib = 0;
+  double fast_build = 0, previous_build = 0;  // ms
 };
 
 template <class F>
@@ -168,7 +193,7 @@ MapResult bench_map(const std::string& map_path, const Settings& set) {
               map.obstacles.size(), map.segment_count(), opt.rmax, beams.size(), opt.laser_height);
 
   std::unique_ptr<SeedRayCaster> seed_p;
-  std::unique_ptr<SweepRayCaster> fast_p, before_p;
+  std::unique_ptr<SweepRayCaster> fast_p, previous_p, before_p;
   const double seed_build = build_ms([&] { seed_p = std::make_unique<SeedRayCaster>(map, opt); });
   SweepOptions fast_opt{set.cell};
   fast_opt.occluders = set.occluders;
@@ -177,8 +202,12 @@ MapResult bench_map(const std::string& map_path, const Settings& set) {
   before_opt.kernel = SweepKernel::per_beam;
   const double fast_build = build_ms([&] { fast_p = std::make_unique<SweepRayCaster>(map, opt, fast_opt); });
   const double before_build = build_ms([&] { before_p = std::make_unique<SweepRayCaster>(map, opt, before_opt); });
+  SweepOptions previous_opt{set.previous_cell > 0 ? set.previous_cell : previous_default_cell(map, opt)};
+  previous_opt.occluders = set.previous_occluders;
+  const double previous_build =
+      build_ms([&] { previous_p = std::make_unique<SweepRayCaster>(map, opt, previous_opt); });
   const SeedRayCaster& seed = *seed_p;
-  const SweepRayCaster &fast = *fast_p, &before = *before_p;
+  const SweepRayCaster &fast = *fast_p, &previous = *previous_p, &before = *before_p;
 
   const std::vector<Pose> poses = random_poses(map, set.poses_fast, 1);
   const std::vector<Pose> seed_poses(poses.begin(), poses.begin() + std::min(set.poses_seed, poses.size()));
@@ -186,14 +215,15 @@ MapResult bench_map(const std::string& map_path, const Settings& set) {
   // Same rays, same answers: the figures below compare equal work.
   size_t hits = 0, differ = 0;
   {
-    std::vector<double> a(beams.size()), b(beams.size()), c(beams.size());
+    std::vector<double> a(beams.size()), b(beams.size()), c(beams.size()), d(beams.size());
     for (const Pose& q : seed_poses) {
       seed.cast_scan(q.p, q.theta, beams, a.data());
       fast.cast_scan(q.p, q.theta, beams, b.data());
       before.cast_scan(q.p, q.theta, beams, c.data());
+      previous.cast_scan(q.p, q.theta, beams, d.data());
       for (size_t j = 0; j < beams.size(); ++j) {
         hits += b[j] < opt.rmax;
-        differ += std::fabs(a[j] - b[j]) > 1e-6 || std::fabs(a[j] - c[j]) > 1e-6;
+        differ += std::fabs(a[j] - b[j]) > 1e-6 || std::fabs(a[j] - c[j]) > 1e-6 || std::fabs(a[j] - d[j]) > 1e-6;
       }
     }
   }
@@ -205,24 +235,30 @@ MapResult bench_map(const std::string& map_path, const Settings& set) {
   char note[128];
   std::snprintf(note, sizeof note, "build %.1f ms", seed_build);
   row("seed: bounding circles per scan", s1, s2, note);
-  const Rate b1 = rate(before, poses, beams, 1, repeats), b2 = rate(before, poses, beams, threads, repeats);
+  const std::vector<const RayCaster*> sweeps = {&before, &previous, &fast};
+  const std::vector<Rate> one = rates(sweeps, poses, beams, 1, repeats), two = rates(sweeps, poses, beams, threads, repeats);
+  const Rate b1 = one[0], b2 = two[0], p1 = one[1], p2 = two[1], f1 = one[2], f2 = two[2];
   std::snprintf(note, sizeof note, "build %.1f ms, %.2f MiB", before_build, mib(before.memory_bytes()));
   row("before: sweep, 4 m cells, per beam", b1, b2, note);
-  const Rate f1 = rate(fast, poses, beams, 1, repeats), f2 = rate(fast, poses, beams, threads, repeats);
+  auto cell_name = [](const SweepRayCaster& s) { return std::to_string(s.candidates().cell()).substr(0, 4) + " m"; };
+  std::snprintf(note, sizeof note, "build %.1f ms, %.2f MiB", previous_build, mib(previous.memory_bytes()));
+  row("previous: " + cell_name(previous) + " cells, culled, batched", p1, p2, note);
   std::snprintf(note, sizeof note, "build %.1f ms, %.2f MiB", fast_build, mib(fast.memory_bytes()));
-  row("fast: sweep, " + std::to_string(fast.candidates().cell()).substr(0, 4) + " m cells, culled, batched", f1, f2,
-      note);
+  row("fast: sweep, " + cell_name(fast) + " cells, culled, batched", f1, f2, note);
   std::printf("%-40s %9.1f x %9.1f x %9.1f x\n", "ratio fast / before", f1.wall / b1.wall, f2.wall / b2.wall,
               f1.cpu / b1.cpu);
+  std::printf("%-40s %9.2f x %9.2f x %9.2f x\n", "ratio fast / previous", f1.wall / p1.wall, f2.wall / p2.wall,
+              f1.cpu / p1.cpu);
   std::printf("%-40s %9.1f x %9.1f x %9.1f x\n", "ratio fast / seed", f1.wall / s1.wall, f2.wall / s2.wall,
               f1.cpu / s1.cpu);
 
   if (set.alternatives) {
     std::printf("\nalternatives tried (same poses and beams)\n");
-    for (double c : {1.0, 2.0, 4.0})  // 0.5 m lists would not fit: the grid doubles it
-      for (size_t occ : {size_t{0}, size_t{16}, size_t{32}, size_t{64}})
+    for (double c : {0.5, 1.0, 2.0, 4.0})
+      for (size_t occ : {size_t{0}, size_t{16}, size_t{32}, size_t{64}, size_t{128}})
         for (SweepKernel k : {SweepKernel::per_beam, SweepKernel::batched}) {
           if (k == SweepKernel::per_beam && occ != 0 && occ != 32) continue;
+          if (c == 0.5 && occ == 0) continue;  // without culling 0.5 m lists would not fit
           SweepOptions so{c};
           so.occluders = occ;
           so.kernel = k;
@@ -259,19 +295,27 @@ MapResult bench_map(const std::string& map_path, const Settings& set) {
   }
 
   const std::vector<Pose> pf(poses.begin(), poses.begin() + std::min<size_t>(set.particles, poses.size()));
-  const Update ub = filter_update(before, pf, beams, threads, repeats);
-  const Update uf = filter_update(fast, pf, beams, threads, repeats);
+  const std::vector<Update> ups = filter_updates(sweeps, pf, beams, threads, repeats);
+  const Update ub = ups[0], up = ups[1], uf = ups[2];
   const double seed_update_s = pf.size() * beams.size() / (s2.wall * 1e6);
   std::printf("\nfilter update, %zu poses x %zu rays on %d threads (seed %.2f Hz):\n", pf.size(), beams.size(),
               threads, 1 / seed_update_s);
-  std::printf("  before %7.1f Hz median, %7.1f Hz best, %7.1f Hz CPU-bound\n", ub.hz_median, ub.hz_best, ub.hz_cpu);
-  std::printf("  fast   %7.1f Hz median, %7.1f Hz best, %7.1f Hz CPU-bound  (%.1f x before, CPU-bound)\n",
-              uf.hz_median, uf.hz_best, uf.hz_cpu, uf.hz_cpu / ub.hz_cpu);
+  std::printf("  before   %7.1f Hz median, %7.1f Hz best, %7.1f Hz CPU-bound\n", ub.hz_median, ub.hz_best,
+              ub.hz_cpu);
+  std::printf("  previous %7.1f Hz median, %7.1f Hz best, %7.1f Hz CPU-bound\n", up.hz_median, up.hz_best,
+              up.hz_cpu);
+  std::printf("  fast     %7.1f Hz median, %7.1f Hz best, %7.1f Hz CPU-bound  (CPU-bound: %.1f x before, %.2f x "
+              "previous)\n",
+              uf.hz_median, uf.hz_best, uf.hz_cpu, uf.hz_cpu / ub.hz_cpu, uf.hz_cpu / up.hz_cpu);
   std::printf("fast structure: %.2f MiB (%zu cells of %.2g m, %zu list entries, %.1f per cell); before %.2f MiB\n\n",
               mib(fast.memory_bytes()), fast.candidates().cells(), fast.candidates().cell(),
               fast.candidates().entries(),
               static_cast<double>(fast.candidates().entries()) / fast.candidates().cells(), mib(before.memory_bytes()));
-  return {f2, b2, threads * f1.cpu, threads * b1.cpu, uf, ub, mib(fast.memory_bytes())};
+  std::printf("previous structure: %.2f MiB (%zu cells of %.2g m, %.1f entries per cell)\n\n",
+              mib(previous.memory_bytes()), previous.candidates().cells(), previous.candidates().cell(),
+              static_cast<double>(previous.candidates().entries()) / previous.candidates().cells());
+  return {f2,  p2, b2, threads * f1.cpu, threads * p1.cpu, threads * b1.cpu, uf, up, ub, mib(fast.memory_bytes()),
+          mib(previous.memory_bytes()), fast_build, previous_build};
 }
 
 }  // namespace
@@ -294,6 +338,11 @@ int main(int argc, char** argv) {
   app.add_option("--threads", set.threads, "threads of the multi-threaded figures")->capture_default_str();
   app.add_option("--cell", set.cell, "cell of the fast caster's candidate grid, metres (0: by density)")
       ->capture_default_str();
+  app.add_option("--previous-cell", set.previous_cell,
+                 "cell of the previous default, timed beside (0: 1 m where dense, else 4 m)")
+      ->capture_default_str();
+  app.add_option("--previous-occluders", set.previous_occluders, "occluders of the previous default")
+      ->capture_default_str();
   app.add_option("--occluders", set.occluders, "walls tried as occluders per cell (0: no culling)")
       ->capture_default_str();
   app.add_flag("--alternatives", set.alternatives, "also time the other designs and cell sizes tried");
@@ -309,6 +358,10 @@ int main(int argc, char** argv) {
     std::printf("  %-50s fast %6.1f M (%6.1f M) vs before %6.1f M (%6.1f M): %.1f x; update %.0f Hz vs %.0f Hz; %.2f MiB\n",
                 maps[i].c_str(), r.fast2.wall, r.fast_cpu, r.before2.wall, r.before_cpu, r.fast_cpu / r.before_cpu,
                 r.fast_update.hz_cpu, r.before_update.hz_cpu, r.fast_mib);
+    std::printf("  %-50s fast vs previous: %.2f x rays (CPU-bound), %.2f x update (%.0f Hz vs %.0f Hz), %.2f vs %.2f "
+                "MiB, build %.0f vs %.0f ms\n",
+                "", r.fast_cpu / r.previous_cpu, r.fast_update.hz_cpu / r.previous_update.hz_cpu, r.fast_update.hz_cpu,
+                r.previous_update.hz_cpu, r.fast_mib, r.previous_mib, r.fast_build, r.previous_build);
   }
   const MapResult& dense = results[0];
   std::printf(

@@ -11,6 +11,11 @@
 // index LaserObstacles::specials. Each list is ordered nearest first, with a distance
 // no point of the cell is nearer than: a single ray stops reading the list once that
 // passes its nearest hit, and a scan meets the walls that end most rays first.
+//
+// With culling, cells finer than kRootCell are built level by level, each cell from its
+// parent's culled list (a wall hidden from the parent is hidden from each quarter of
+// it): small cells cost their parents' short lists, not every wall within reach, so
+// more occluders are affordable there (docs/ray-casting.md, "The sweep on dense floors").
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -25,6 +30,8 @@ namespace fleetmap {
 class CandidateGrid {
  public:
   static constexpr double kPad = 1e-6;  // metres added to rmax: immune to rounding
+  // With culling, cells finer than this are built by halving cells of about this size.
+  static constexpr double kRootCell = 4.0;  // metres
 
   struct Candidate {
     uint32_t id;
@@ -36,9 +43,9 @@ class CandidateGrid {
     float arc_width;
   };
 
-  // cell: side in metres, doubled until the lists fit in max_bytes. occluders > 0: each
-  // list leaves out the walls that one of its `occluders` nearest kept walls hides from
-  // the whole cell (occlusion.h); 0 keeps every wall within reach.
+  // cell: side in metres, doubled until the lists are known to fit in max_bytes.
+  // occluders > 0: each list leaves out the walls that one of its `occluders` nearest
+  // kept walls hides from the whole cell (occlusion.h); 0 keeps every wall within reach.
   CandidateGrid(const LaserObstacles& obstacles, double cell, double rmax, size_t max_bytes, size_t occluders = 0);
 
   // The candidates for a ray from p (empty outside the grid: nothing is within rmax).
@@ -59,6 +66,16 @@ class CandidateGrid {
   static double estimate_mean_list(const LaserObstacles& obstacles, double cell, double rmax);
 
  private:
+  class CellCuller;  // one cell's list from its sorted obstacles (candidate_grid.cpp)
+
+  std::span<const Candidate> near_cell(size_t c) const {
+    return {list_.data() + offsets_[c], list_.data() + offsets_[c + 1]};
+  }
+  // Every obstacle within reach of each cell, culled (a grid of `cell`).
+  void build_root(const LaserObstacles& obstacles, double cell, double reach, CellCuller& culler);
+  // Cells of half the size, each from its parent's list.
+  void halve(const LaserObstacles& obstacles, double reach, CellCuller& culler);
+
   GridFrame frame_;
   uint32_t wall_count_ = 0;
   std::vector<uint32_t> offsets_;  // cells() + 1

@@ -32,13 +32,16 @@ enum class SweepKernel { batched, per_beam };
 struct SweepOptions {
   // Metres; 0 picks by density: kDenseCell where the kSparseCell lists would average
   // more than kDenseList entries (a building floor), else kSparseCell (a campus, where
-  // small cells only cost memory and build time). bench-raycast compares sizes.
+  // small cells only cost memory and build time). bench-raycast compares sizes
+  // (docs/ray-casting.md, "The sweep on dense floors").
   double cell = 0;
-  static constexpr double kDenseCell = 1.0, kSparseCell = 4.0, kDenseList = 32;
+  static constexpr double kDenseCell = 0.5, kSparseCell = 4.0, kDenseList = 32;
   size_t max_bytes = 64u << 20;  // budget of the candidate lists
   SweepKernel kernel = SweepKernel::batched;
-  // Walls of a cell's list tried as occluders of the farther ones (0: no culling).
-  size_t occluders = 32;
+  // Walls of a cell's list tried as occluders of the farther ones (0: no culling). The
+  // small cells of a dense floor hide more with more of them, at little build cost:
+  // they are built from their parents' culled lists (candidate_grid.h).
+  size_t occluders = 128;
 };
 
 class SweepRayCaster : public RayCaster {

@@ -229,14 +229,16 @@ TEST(RayCasterEquivalence, OtherCellSizes) {
 }
 
 // The dense floor, where occlusion culling drops the most walls, through each sweep
-// kernel with and without culling and with fewer or more occluders tried (cells of 2 and
-// 4 m: their lists build quickly).
+// kernel with and without culling and with fewer or more occluders tried (cells of 4 m
+// built directly; 2, 1 and 0.5 m halved from them, level by level; fast() is 0.5 m).
 TEST(RayCasterEquivalence, SweepKernelsAndCulling) {
   const std::vector<Candidate> sweeps = {
       sweep("per beam 2 m, 32", sweep_options(2, 32, SweepKernel::per_beam)),
       sweep("batched 4 m, no cull", sweep_options(4, 0, SweepKernel::batched)),
       sweep("batched 4 m, 8", sweep_options(4, 8, SweepKernel::batched)),
-      sweep("batched 2 m, 64", sweep_options(2, 64, SweepKernel::batched))};
+      sweep("batched 2 m, 64", sweep_options(2, 64, SweepKernel::batched)),
+      sweep("batched 1 m, 32", sweep_options(1, 32, SweepKernel::batched)),
+      sweep("batched 0.5 m, 8", sweep_options(0.5, 8, SweepKernel::batched)), fast()};
   expect_equivalent("GDC1 (varied)", varied(gdc1(), 4), 0.3, sweeps, kRays / 10, 0.2);
 }
 
