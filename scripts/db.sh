@@ -43,6 +43,18 @@ admin() { mariadb --no-defaults --socket="$SOCK" -u "$ME" "$@"; }
 
 running() { [ -S "$SOCK" ] && mariadb-admin --no-defaults --socket="$SOCK" -u "$ME" ping >/dev/null 2>&1; }
 
+# A Galera node (scripts/cluster.sh) answers pings before it serves: until it has synced
+# with its group, statements fail with 1047 (a bootstrap's CREATE DATABASE did, once).
+wsrep_wait_ready() {
+  case " ${FLEETMAP_MYSQLD_ARGS:-} " in *" --wsrep-on=ON "*) ;; *) return 0 ;; esac
+  local i
+  for i in $(seq 1 480); do
+    [ "$(admin -N -e "SHOW GLOBAL STATUS LIKE 'wsrep_ready'" 2>/dev/null | awk '{print $2}')" = ON ] && return 0
+    sleep 0.25
+  done
+  start_failed "the Galera node did not become ready (wsrep_ready) within 120 s, see $LOG"
+}
+
 # One random password per account, generated once and kept in fleetmap.conf.
 password_for() {
   local role="$1" pw=""
@@ -152,7 +164,7 @@ start() {
     sleep 0.25
   done
   running || start_failed "server did not answer within 120 s, see $LOG"
-  [ "${FLEETMAP_JOINER:-0}" = 1 ] || load_sql
+  [ "${FLEETMAP_JOINER:-0}" = 1 ] || { wsrep_wait_ready; load_sql; }
   echo "db.sh: running (socket $SOCK, port $PORT, database $DB, config $CONF)"
 }
 
