@@ -109,10 +109,8 @@ struct Distances {
 // is backed by a kept wall or by a chain of strictly nearer hiders ending at one.
 class CandidateGrid::CellCuller {
  public:
-  CellCuller(const LaserObstacles& obstacles, size_t occluders, bool joints)
-      : obstacles_(obstacles), walls_(static_cast<uint32_t>(obstacles.walls.size())), occluders_(occluders) {
-    if (joints && occluders > 0) find_joints();
-  }
+  CellCuller(const LaserObstacles& obstacles, size_t occluders)
+      : obstacles_(obstacles), walls_(static_cast<uint32_t>(obstacles.walls.size())), occluders_(occluders) {}
 
   void append(const Rect& rect, Point centre, std::span<const Keyed> sorted,
               std::vector<CandidateGrid::Candidate>& list) {
@@ -123,8 +121,6 @@ class CandidateGrid::CellCuller {
       const double v = key - half_diagonal - 1e-5 * (1 + key);
       return v > 0 ? std::nextafter(static_cast<float>(v), 0.0f) : 0.0f;
     };
-    if (!is_hider_.empty())
-      for (const Hider& h : hiders_) is_hider_[h.id] = 0;
     hiders_.clear();
     for (const auto& [key, id] : sorted) {
       Arc arc;  // specials: every direction (their cone in the sweep is wider than the box)
@@ -136,10 +132,7 @@ class CandidateGrid::CellCuller {
         if (hi < lo) hi += 4;
         const bool on_line = std::fabs(cross(a, w.e)) <= 1e-9 * (1 + dot(w.e, w.e));
         if (!on_line && hidden(w, lo, hi, rect)) continue;
-        if (hiders_.size() < occluders_ && !on_line) {
-          hiders_.push_back({id, lo, hi});
-          if (!is_hider_.empty()) is_hider_[id] = 1;
-        }
+        if (hiders_.size() < occluders_ && !on_line) hiders_.push_back({id, lo, hi});
         arc = arc_from_cell(rect, w);
       }
       list.push_back({id, lower_bound(key), arc.lo, arc.width});
@@ -161,74 +154,17 @@ class CandidateGrid::CellCuller {
       if (h.lo - kSlack <= lo + shift && hi + shift <= h.hi + kSlack && hides(obstacles_.walls[h.id], w, rect))
         return true;
     }
-    return !is_hider_.empty() && hidden_by_joint(w, lo, hi, rect);
-  }
-
-  // Two kept walls that meet, as one occluder (occlusion.h, hides_joint); from the
-  // centre their angles join at the shared end and must hold the wall's.
-  bool hidden_by_joint(const RaySegment& w, double lo, double hi, const Rect& rect) const {
-    constexpr double kSlack = 1e-6;
-    for (const Hider& h : hiders_)
-      for (uint32_t k = joint_offsets_[h.id]; k < joint_offsets_[h.id + 1]; ++k) {
-        const uint32_t g = joints_[k];
-        if (g < h.id || !is_hider_[g]) continue;
-        const Hider& o = *std::find_if(hiders_.begin(), hiders_.end(), [&](const Hider& x) { return x.id == g; });
-        double olo = 0, ohi = -1;
-        for (const double shift : {0.0, -4.0, 4.0})
-          if (o.lo + shift <= h.hi + kSlack && o.hi + shift >= h.lo - kSlack) {
-            olo = o.lo + shift, ohi = o.hi + shift;
-            break;
-          }
-        if (ohi < olo) continue;  // apart: no single arc
-        const double ulo = std::min(h.lo, olo), uhi = std::max(h.hi, ohi);
-        const double shift = lo + kSlack < ulo ? 4 : 0;
-        if (ulo - kSlack <= lo + shift && hi + shift <= uhi + kSlack &&
-            hides_joint(obstacles_.walls[h.id], obstacles_.walls[g], w, rect))
-          return true;
-      }
     return false;
-  }
-
-  // For each wall, the walls with an end at one of its ends, bit for bit.
-  void find_joints() {
-    std::vector<std::pair<std::pair<double, double>, uint32_t>> ends;
-    ends.reserve(2 * walls_);
-    for (uint32_t i = 0; i < walls_; ++i) {
-      const RaySegment& w = obstacles_.walls[i];
-      const Point b = w.a + w.e;
-      ends.push_back({{w.a.x, w.a.y}, i});
-      ends.push_back({{b.x, b.y}, i});
-    }
-    std::sort(ends.begin(), ends.end());
-    std::vector<std::pair<uint32_t, uint32_t>> pairs;
-    for (size_t i = 0; i < ends.size();) {
-      size_t j = i;
-      while (j < ends.size() && ends[j].first == ends[i].first) ++j;
-      for (size_t x = i; x < j; ++x)
-        for (size_t y = i; y < j; ++y)
-          if (ends[x].second != ends[y].second) pairs.push_back({ends[x].second, ends[y].second});
-      i = j;
-    }
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-    joint_offsets_.assign(walls_ + 1, 0);
-    for (const auto& p : pairs) ++joint_offsets_[p.first + 1];
-    for (uint32_t i = 0; i < walls_; ++i) joint_offsets_[i + 1] += joint_offsets_[i];
-    joints_.reserve(pairs.size());
-    for (const auto& p : pairs) joints_.push_back(p.second);
-    is_hider_.assign(walls_, 0);
   }
 
   const LaserObstacles& obstacles_;
   uint32_t walls_;
   size_t occluders_;
   std::vector<Hider> hiders_;
-  std::vector<uint32_t> joint_offsets_, joints_;  // walls meeting each wall (find_joints)
-  std::vector<uint8_t> is_hider_;                 // by wall id: in hiders_ (empty: no joints)
 };
 
 CandidateGrid::CandidateGrid(const LaserObstacles& obstacles, double cell, double rmax, size_t max_bytes,
-                             size_t occluders, bool joints)
+                             size_t occluders)
     : wall_count_(static_cast<uint32_t>(obstacles.walls.size())) {
   if (obstacles.obstacles.empty()) return;
   // Cells finer than kRootCell are built by halving a grid of them level by level
@@ -242,7 +178,7 @@ CandidateGrid::CandidateGrid(const LaserObstacles& obstacles, double cell, doubl
     while (root * 2 <= kRootCell) root *= 2;
   while (estimate_bytes(obstacles, root, rmax) > max_bytes) root *= 2;
   const double reach = rmax + kPad;
-  CellCuller culler(obstacles, occluders, joints);
+  CellCuller culler(obstacles, occluders);
   build_root(obstacles, root, reach, culler);
   // A cell's list is part of its parent's: four times the parent level's entries bound
   // the next level's.

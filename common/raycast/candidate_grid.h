@@ -46,9 +46,7 @@ class CandidateGrid {
   // cell: side in metres, doubled until the lists are known to fit in max_bytes.
   // occluders > 0: each list leaves out the walls that one of its `occluders` nearest
   // kept walls hides from the whole cell (occlusion.h); 0 keeps every wall within reach.
-  // joints: also two kept walls that meet, as one occluder (occlusion.h, hides_joint).
-  CandidateGrid(const LaserObstacles& obstacles, double cell, double rmax, size_t max_bytes, size_t occluders = 0,
-                bool joints = false);
+  CandidateGrid(const LaserObstacles& obstacles, double cell, double rmax, size_t max_bytes, size_t occluders = 0);
 
   // The candidates for a ray from p (empty outside the grid: nothing is within rmax).
   std::span<const Candidate> near(Point p) const {

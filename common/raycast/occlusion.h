@@ -23,15 +23,4 @@ inline constexpr double kOcclusionMargin = 1e-6;  // metres
 // Whether O hides all of W from every point of the rectangle.
 bool hides(const RaySegment& occluder, const RaySegment& wall, const Rect& cell);
 
-// Two walls that meet (an end of one is an end of the other, bit for bit), taken as
-// the polyline A-B-C: a wall behind a corner, or behind a wall drawn in several
-// segments, is hidden by neither alone. Exact (docs/ray-casting.md, "The sweep on
-// dense floors"): when the chord AC hides W (the test above) and the triangle ABC lies
-// clear of the cell and of W, the ray to any point of W crosses AC inside the triangle,
-// so it meets AB or BC strictly before W. Ends that merely come close are refused: a
-// grazing ray could pass through the gap. So are cells nearly on AB's or BC's line, so
-// that the crossing is never grazing and rounding stays far below the 1e-9 m by which
-// ray_segment.h widens the ends, which is what keeps the ray from leaking through B.
-bool hides_joint(const RaySegment& first, const RaySegment& second, const RaySegment& wall, const Rect& cell);
-
 }  // namespace fleetmap

@@ -30,7 +30,7 @@ SweepRayCaster::SweepRayCaster(const Map& map, RayCasterOptions options, SweepOp
       kernel_(sweep.kernel),
       obstacles_(prepare_laser_obstacles(map, options.laser_height)),
       candidates_(obstacles_, cell_for(obstacles_, sweep, options.rmax), options.rmax, sweep.max_bytes,
-                  sweep.occluders, sweep.joints) {}
+                  sweep.occluders) {}
 
 size_t SweepRayCaster::memory_bytes() const {
   return candidates_.memory_bytes() + obstacles_.walls.capacity() * sizeof(RaySegment) +

@@ -42,8 +42,6 @@ struct SweepOptions {
   // small cells of a dense floor hide more with more of them, at little build cost:
   // they are built from their parents' culled lists (candidate_grid.h).
   size_t occluders = 128;
-  // Also two kept walls that meet, as one occluder (a corner, a wall drawn in pieces).
-  bool joints = true;
 };
 
 class SweepRayCaster : public RayCaster {
