@@ -64,13 +64,6 @@ constexpr double kSafeSine2 = 1e-8;
   return any != 0;
 }
 
-// The longest range of beams [k0, k1).
-[[gnu::always_inline]] inline double longest(const double* __restrict r, size_t k0, size_t k1) {
-  double m = 0;
-  for (size_t k = k0; k < k1; ++k) m = std::max(m, r[k]);
-  return m;
-}
-
 }  // namespace
 
 __attribute__((target_clones("avx2", "default"))) void sweep_batched(const SweepScan& in,
@@ -162,15 +155,10 @@ __attribute__((target_clones("avx2", "default"))) void sweep_batched(const Sweep
     const Point b = a + seg.e;
     const bool exact = w.num_t * w.num_t * seg.inv_len2 <= kSafeSine2 * std::max(dot(a, a), dot(b, b)) ||
                        std::fabs(w.num_t) <= seg.tol_cross;
-    // A hit is no nearer than the wall's nearest point: a run whose beams are all no
-    // longer than that is passed. 1e-9 m is far above the error of t where hit_run
-    // applies (a sine of 1e-4 at least).
-    const bool run_bound = in.run_bound;
-    const double bound = run_bound ? std::sqrt(d2) - 1e-9 : 0.0;
     for_runs_between(order, pa - kSweepAngleSlack, pb + kSweepAngleSlack, [&](size_t k0, size_t k1) __attribute__((always_inline)) {
       if (exact)
         exact_run(k0, k1, test);
-      else if (!run_bound || longest(r, k0, k1) > bound)
+      else
         hit_run(dx, dy, r, k0, k1, w);
     });
   }

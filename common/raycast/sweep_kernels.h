@@ -29,9 +29,6 @@ struct SweepScan {
   double theta = 0;
   double rmax = 0;
   double reach = 0;  // rmax and a hair: nothing farther can shorten a range
-  // batched: pass a wall's run of beams when none is longer than the wall's distance
-  // from the origin (sweep_batched.cpp).
-  bool run_bound = false;
 };
 
 // ranges[i] for the beam at theta + relative_angles[i], from rmax down to the nearest hit.

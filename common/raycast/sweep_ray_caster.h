@@ -42,9 +42,6 @@ struct SweepOptions {
   // small cells of a dense floor hide more with more of them, at little build cost:
   // they are built from their parents' culled lists (candidate_grid.h).
   size_t occluders = 128;
-  // The early stop per run of beams, on the wall's distance from the origin, as well
-  // as for the whole scan on the cell's.
-  bool run_bound = true;
 };
 
 class SweepRayCaster : public RayCaster {
@@ -62,7 +59,6 @@ class SweepRayCaster : public RayCaster {
  private:
   RayCasterOptions options_;
   SweepKernel kernel_;
-  bool run_bound_;
   LaserObstacles obstacles_;
   CandidateGrid candidates_;
 };
