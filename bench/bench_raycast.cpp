@@ -166,7 +166,6 @@ struct Settings {
   double cell = SweepOptions{}.cell;
   double previous_cell = 0;  // 0: previous_default_cell()
   size_t occluders = SweepOptions{}.occluders, previous_occluders = 32;
-  bool sector_stop = SweepOptions{}.sector_stop, previous_sector_stop = false;
   bool alternatives = false;
 };
 
@@ -198,7 +197,6 @@ MapResult bench_map(const std::string& map_path, const Settings& set) {
   const double seed_build = build_ms([&] { seed_p = std::make_unique<SeedRayCaster>(map, opt); });
   SweepOptions fast_opt{set.cell};
   fast_opt.occluders = set.occluders;
-  fast_opt.sector_stop = set.sector_stop;
   SweepOptions before_opt{4.0};
   before_opt.occluders = 0;
   before_opt.kernel = SweepKernel::per_beam;
@@ -206,7 +204,6 @@ MapResult bench_map(const std::string& map_path, const Settings& set) {
   const double before_build = build_ms([&] { before_p = std::make_unique<SweepRayCaster>(map, opt, before_opt); });
   SweepOptions previous_opt{set.previous_cell > 0 ? set.previous_cell : previous_default_cell(map, opt)};
   previous_opt.occluders = set.previous_occluders;
-  previous_opt.sector_stop = set.previous_sector_stop;
   const double previous_build =
       build_ms([&] { previous_p = std::make_unique<SweepRayCaster>(map, opt, previous_opt); });
   const SeedRayCaster& seed = *seed_p;
@@ -347,9 +344,6 @@ int main(int argc, char** argv) {
   app.add_option("--previous-occluders", set.previous_occluders, "occluders of the previous default")
       ->capture_default_str();
   app.add_option("--occluders", set.occluders, "walls tried as occluders per cell (0: no culling)")
-      ->capture_default_str();
-  app.add_option("--sector-stop", set.sector_stop, "fast: early stop per sector too (0 or 1)")->capture_default_str();
-  app.add_option("--previous-sector-stop", set.previous_sector_stop, "previous: early stop per sector too (0 or 1)")
       ->capture_default_str();
   app.add_flag("--alternatives", set.alternatives, "also time the other designs and cell sizes tried");
   CLI11_PARSE(app, argc, argv);

@@ -64,9 +64,6 @@ constexpr double kSafeSine2 = 1e-8;
   return any != 0;
 }
 
-// Sectors of the world's pseudo-angle circle [0, 4), a quarter each (sector stop).
-constexpr int kSectors = 16;
-
 }  // namespace
 
 __attribute__((target_clones("avx2", "default"))) void sweep_batched(const SweepScan& in,
@@ -104,23 +101,6 @@ __attribute__((target_clones("avx2", "default"))) void sweep_batched(const Sweep
   if (arc_width < 0) arc_width += 4;
   const double reach2 = in.reach * in.reach;
   const std::vector<RaySegment>& walls = in.obstacles->walls;
-  // The longest range in each sector, as of the last check: never shorter than now.
-  // A beam that meets a wall points into the wall's arc from the cell, so its sector is
-  // one the arc spans; a wall no nearer than `nearest` cannot shorten a beam whose range
-  // is already no longer.
-  const bool sectors = in.sector_stop;
-  thread_local std::vector<uint8_t> sector;
-  double longest[kSectors];
-  auto refresh = [&] {
-    std::fill(longest, longest + kSectors, 0.0);
-    for (size_t k = 0; k < n; ++k) longest[sector[k]] = std::max(longest[sector[k]], r[k]);
-  };
-  if (sectors) {
-    sector.resize(n);
-    for (size_t k = 0; k < n; ++k)
-      sector[k] = static_cast<uint8_t>(std::min(kSectors - 1, static_cast<int>(pseudo_angle({dx[k], dy[k]}) * 4)));
-    refresh();
-  }
   size_t since_check = 0;
   for (const CandidateGrid::Candidate& cand : in.near) {
     // Nearest first: once no beam is longer than this candidate's distance from the
@@ -128,14 +108,6 @@ __attribute__((target_clones("avx2", "default"))) void sweep_batched(const Sweep
     if (++since_check == 8) {
       since_check = 0;
       if (!any_longer(r, n, cand.nearest)) break;
-      if (sectors) refresh();
-    }
-    if (sectors && cand.arc_width < 4) {
-      const double lo = cand.arc_lo, hi = lo + static_cast<double>(cand.arc_width);
-      double m = 0;
-      for (int s = static_cast<int>(lo * 4), s1 = static_cast<int>(hi * 4); s <= s1; ++s)
-        m = std::max(m, longest[s % kSectors]);
-      if (m <= cand.nearest) continue;
     }
     // The candidate's arc from the cell (candidate_grid.h) misses the scan's: no beam
     // comes near it.

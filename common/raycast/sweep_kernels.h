@@ -29,9 +29,6 @@ struct SweepScan {
   double theta = 0;
   double rmax = 0;
   double reach = 0;  // rmax and a hair: nothing farther can shorten a range
-  // batched: also pass a candidate when the beams in the sectors of its arc are all no
-  // longer than its distance (sweep_batched.cpp).
-  bool sector_stop = false;
 };
 
 // ranges[i] for the beam at theta + relative_angles[i], from rmax down to the nearest hit.

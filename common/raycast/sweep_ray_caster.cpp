@@ -28,7 +28,6 @@ double cell_for(const LaserObstacles& obstacles, const SweepOptions& sweep, doub
 SweepRayCaster::SweepRayCaster(const Map& map, RayCasterOptions options, SweepOptions sweep)
     : options_(options),
       kernel_(sweep.kernel),
-      sector_stop_(sweep.sector_stop),
       obstacles_(prepare_laser_obstacles(map, options.laser_height)),
       candidates_(obstacles_, cell_for(obstacles_, sweep, options.rmax), options.rmax, sweep.max_bytes,
                   sweep.occluders) {}
@@ -71,7 +70,6 @@ void SweepRayCaster::cast_scan(Point o, double theta, const std::vector<double>&
   scan.theta = theta;
   scan.rmax = options_.rmax;
   scan.reach = options_.rmax + CandidateGrid::kPad;
-  scan.sector_stop = sector_stop_;
   if (kernel_ == SweepKernel::per_beam)
     sweep_per_beam(scan, relative_angles, ranges);
   else

@@ -42,8 +42,6 @@ struct SweepOptions {
   // small cells of a dense floor hide more with more of them, at little build cost:
   // they are built from their parents' culled lists (candidate_grid.h).
   size_t occluders = 128;
-  // The early stop per sector of directions as well as for the whole scan.
-  bool sector_stop = true;
 };
 
 class SweepRayCaster : public RayCaster {
@@ -61,7 +59,6 @@ class SweepRayCaster : public RayCaster {
  private:
   RayCasterOptions options_;
   SweepKernel kernel_;
-  bool sector_stop_;
   LaserObstacles obstacles_;
   CandidateGrid candidates_;
 };
