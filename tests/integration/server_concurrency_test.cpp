@@ -467,10 +467,21 @@ TEST(ServerCrash, KilledAgainAndAgainLosesNothingAndAnswersNothingTwice) {
   auto server = std::make_unique<ServerProcess>(flags, "crash_server.log");
   TrafficGenerator traffic(bots, milliseconds(4));
   long long max_backlog = 0;
+  // A kill lands on a serving server: the random delay counts from a worker's connect.
+  // Under the sanitizers a start takes longer than the delay, and no kill hit a batch.
+  auto connects = [&] {
+    const std::string log = server->log();
+    size_t n = 0;
+    for (size_t at = log.find("connected as"); at != std::string::npos; at = log.find("connected as", at + 1)) ++n;
+    return n;
+  };
+  size_t before = 0;  // connects logged before the running server started
   for (int k = 0; k < kKills; ++k) {
+    wait_until([&] { return connects() > before; }, seconds(20), milliseconds(10));
     std::this_thread::sleep_for(milliseconds(delay_ms(rng)));
     server->kill9();
     max_backlog = std::max(max_backlog, waiting_requests(bots));
+    before = connects();
     server = std::make_unique<ServerProcess>(flags, "crash_server.log");
   }
   // A little more traffic with a live server, then the robots stop and the server drains rr.
