@@ -156,6 +156,13 @@ int main(int argc, char** argv) {
                  "the likelihood field's floor per point (log-likelihood), for every preset but seed (default: the "
                  "preset's)")
       ->check(CLI::PositiveNumber);
+  app.add_option("--search-drops-foreground", s.search_drops_foreground,
+                 "1: the searches leave out returns in front of the map (people; foreground.h), 0: they keep them, for "
+                 "every preset but seed (default: the preset's)")
+      ->check(CLI::Range(0, 1));
+  app.add_option("--foreground-width", s.foreground_width,
+                 "metres: the widest run of returns counted as foreground (default: the preset's)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_option("--short-beyond", s.short_beyond,

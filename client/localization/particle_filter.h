@@ -58,6 +58,7 @@
 
 #include "client/localization/ambiguity.h"
 #include "client/localization/compass_prior.h"
+#include "client/localization/foreground.h"
 #include "client/localization/free_space.h"
 #include "client/localization/global_search.h"
 #include "client/localization/motion_model.h"
@@ -127,6 +128,10 @@ struct ParticleFilterOptions {
   // scan by all): 1 casts them all.
   size_t history_beam_stride = 1;
   size_t search_points = 262;         // at most this many stitched points (2 NL) searched
+  // Whether the searches (global and settling) leave out returns standing in front of
+  // the map (foreground.h: people): in the open, each costs the truth the field's floor.
+  bool search_drops_foreground = false;
+  ForegroundOptions foreground;
   double turn_in_place = 0.05;        // metres: below, a step's turn comes from its scans
   double search_sd_xy = 0.1;          // metres: spread of a cluster (the field's cell)
   double search_sd_theta = deg2rad(0.7);  // radians: about the search's heading step

@@ -438,6 +438,8 @@ ParticleFilterOptions trial_filter(const TrialSettings& base, const std::string&
   if (base.settle_after >= 0) f.settle_after = static_cast<size_t>(base.settle_after);
   if (base.search_sigma > 0) f.search.sigma = base.search_sigma;
   if (base.search_max_penalty > 0) f.search.max_penalty = base.search_max_penalty;
+  if (base.search_drops_foreground >= 0) f.search_drops_foreground = base.search_drops_foreground > 0;
+  if (base.foreground_width > 0) f.foreground.max_width = base.foreground_width;
   return f;
 }
 
@@ -449,9 +451,10 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
   const ParticleFilterOptions& f = s.filter;
   std::fprintf(out,
                "-- %s: %s, gamma %.2g, short beyond %.2g m, tempering ESS %.2g x %d stages, init density %.2g /m2, "
-               "roughening %.2g%s\n",
+               "roughening %.2g%s%s\n",
                name.c_str(), describe(f), f.sensor.gamma, f.sensor.short_beyond, f.tempering_ess, f.tempering_stages,
-               f.global_density, f.roughening, f.global_search ? ", global search (likelihood field, ray-cast rerank)" : "");
+               f.global_density, f.roughening, f.global_search ? ", global search (likelihood field, ray-cast rerank)" : "",
+               f.global_search && f.search_drops_foreground ? ", foreground left out of the search" : "");
   std::fflush(out);
   std::optional<GlobalResult> result;
   if (global) {

@@ -65,6 +65,10 @@ struct TrialSettings {
   int settle_after = -1;  // ParticleFilterOptions::settle_after (negative: the preset's)
   // The likelihood field's sigma and per-point floor (GlobalSearchOptions; negative: the preset's).
   double search_sigma = -1, search_max_penalty = -1;
+  // ParticleFilterOptions::search_drops_foreground: 1 on, 0 off, negative: the preset's;
+  // foreground_width > 0 sets ForegroundOptions::max_width.
+  int search_drops_foreground = -1;
+  double foreground_width = -1;
   // After each global trial whose estimate ends out of bounds: whom the scans favour, the
   // truth or the estimate (GlobalTrial::truth_fit), to tell the model's failures (no
   // filter on it could pick the truth) from the filter's (it lost a better place).

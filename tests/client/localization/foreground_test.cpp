@@ -1,0 +1,142 @@
+// foreground_returns (client/localization/foreground.h): narrow runs of returns in front
+// of both neighbours are foreground, walls are not; on simulated scans of GDC1 with
+// people the flagged beams are mostly the people's, and the global search left without
+// them finds the true place where it does not with them.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "client/localization/foreground.h"
+#include "client/localization/free_space.h"
+#include "client/localization/global_search.h"
+#include "client/sim/drive_simulator.h"
+#include "client/sim/laser_simulator.h"
+#include "common/io/amrl_import.h"
+#include "common/raycast/grid_ray_caster.h"
+
+namespace fleetmap::localization {
+namespace {
+
+const std::vector<double> kBeams = evenly_spread_angles(131, kPi);
+
+std::vector<size_t> flagged(const std::vector<double>& ranges, double rmax = 15.0) {
+  const std::vector<uint8_t> f = foreground_returns(ranges, kBeams, rmax);
+  std::vector<size_t> out;
+  for (size_t j = 0; j < f.size(); ++j)
+    if (f[j]) out.push_back(j);
+  return out;
+}
+
+std::vector<size_t> run(size_t first, size_t last) {
+  std::vector<size_t> v;
+  for (size_t j = first; j <= last; ++j) v.push_back(j);
+  return v;
+}
+
+TEST(Foreground, AWallIsNotForeground) {
+  EXPECT_TRUE(flagged(std::vector<double>(131, 5.0)).empty());
+  // A wall 1 m away across 83 degrees (1.33 m), in front of walls 5 m away.
+  std::vector<double> r(131, 5.0);
+  for (size_t j = 50; j <= 110; ++j) r[j] = 1.0;
+  EXPECT_TRUE(flagged(r).empty());
+}
+
+TEST(Foreground, APersonInFrontOfAWallIs) {
+  std::vector<double> r(131, 5.0);
+  for (size_t j = 60; j <= 65; ++j) r[j] = 2.0;  // about 0.2 m wide at 2 m
+  EXPECT_EQ(flagged(r), run(60, 65));
+  // Also against no return behind, and at the edge of the view.
+  std::vector<double> open(131, 15.0);
+  for (size_t j = 0; j <= 4; ++j) open[j] = 2.0;
+  EXPECT_EQ(flagged(open), run(0, 4));
+}
+
+TEST(Foreground, APersonBehindAnotherIsPeeledNext) {
+  std::vector<double> r(131, 5.0);
+  for (size_t j = 60; j <= 65; ++j) r[j] = 2.0;
+  for (size_t j = 66; j <= 70; ++j) r[j] = 3.0;  // between the first person and the wall
+  EXPECT_EQ(flagged(r), run(60, 70));
+}
+
+TEST(Foreground, ARunNearerThanOnlyOneNeighbourIsNot) {
+  // A step in a wall: nearer than the right neighbour, farther than the left.
+  std::vector<double> r(131, 5.0);
+  for (size_t j = 0; j < 60; ++j) r[j] = 1.5;
+  for (size_t j = 60; j <= 62; ++j) r[j] = 3.0;
+  EXPECT_TRUE(flagged(r).empty());
+}
+
+// Scans of GDC1 with ten walking people, from start poses drawn as bench-localization draws them.
+struct PeopleScans {
+  Map map = read_amrl_file(std::string(FLEETMAP_REAL_MAPS) + "/GDC1.vectormap.txt", AmrlOptions{});
+  std::shared_ptr<GridRayCaster> world = std::make_shared<GridRayCaster>(map, RayCasterOptions{0.3, 15.0});
+  FreeSpace free_space{map};
+};
+
+TEST(Foreground, OnGdc1WithPeopleMostFlaggedBeamsArePeople) {
+  const PeopleScans s;
+  size_t people = 0, people_flagged = 0, walls = 0, walls_flagged = 0;
+  for (int t = 0; t < 20; ++t) {
+    std::mt19937_64 rng(300 + t);
+    LaserSimulatorOptions lo;
+    lo.people = 10;
+    LaserSimulator laser(s.world, lo, rng());
+    const Pose truth = pick_start_pose(s.free_space, *s.world, laser.beam_angles(), 0.5, 0.5, rng);
+    const std::vector<double> r = laser.scan(truth), bare = laser.true_scan(truth);
+    const std::vector<uint8_t> f = foreground_returns(r, laser.beam_angles(), 15.0);
+    for (size_t j = 0; j < r.size(); ++j) {
+      const bool person = r[j] < bare[j] - 0.3;  // well short of the wall: the noise is 0.05 m
+      (person ? people : walls) += 1;
+      (person ? people_flagged : walls_flagged) += f[j];
+    }
+  }
+  ASSERT_GT(people, 0u);
+  const double recall = static_cast<double>(people_flagged) / people;
+  const double wall_share = static_cast<double>(walls_flagged) / walls;
+  std::printf("people's beams flagged %.3f (%zu of %zu), walls' %.3f (%zu of %zu)\n", recall, people_flagged, people,
+              wall_share, walls_flagged, walls);
+  // Measured: 0.93 and 0.08. Missed: people less than a person's width before a wall
+  // (their edges join the wall's run) and crowds wider than two people.
+  EXPECT_GT(recall, 0.8);
+  EXPECT_LT(wall_share, 0.15);
+}
+
+TEST(Foreground, TheSearchWithoutItFindsTheTruthWithPeople) {
+  const PeopleScans s;
+  GlobalSearchOptions so;
+  so.field.margin = 15.0;
+  const GlobalSearch search(s.map, so);
+  int with = 0, without = 0;
+  const int trials = 12;
+  for (int t = 0; t < trials; ++t) {
+    std::mt19937_64 rng(400 + t);
+    LaserSimulatorOptions lo;
+    lo.people = 10;
+    LaserSimulator laser(s.world, lo, rng());
+    const Pose truth = pick_start_pose(s.free_space, *s.world, laser.beam_angles(), 0.5, 0.5, rng);
+    std::vector<double> r = laser.scan(truth);
+    auto found = [&](const std::vector<double>& ranges) {
+      const std::vector<Candidate> c = search.search(ranges, laser.beam_angles(), 15.0, truth.theta, deg2rad(3.0), 500);
+      return std::any_of(c.begin(), c.end(), [&](const Candidate& x) {
+        return distance(x.pose, truth) < 0.6 && std::fabs(angle_diff(x.pose.theta, truth.theta)) < deg2rad(2.0);
+      });
+    };
+    with += found(r);
+    const std::vector<uint8_t> f = foreground_returns(r, laser.beam_angles(), 15.0);
+    for (size_t j = 0; j < r.size(); ++j)
+      if (f[j]) r[j] = 15.0;
+    without += found(r);
+  }
+  std::printf("truth among 500 candidates: with the foreground %d of %d, without %d\n", with, trials, without);
+  // Measured: 1 and 10 of 12.
+  EXPECT_GE(without, 9);
+  EXPECT_GE(without, with + 6);
+}
+
+}  // namespace
+}  // namespace fleetmap::localization
