@@ -229,6 +229,9 @@ class ParticleFilter {
   // score: the log-likelihood of the stitched scans), and whether updates still search.
   const std::vector<Candidate>& last_candidates() const { return candidates_; }
   bool searching() const { return global_phase_; }
+  // A deferred look around (defer_look_around) keeps its scans for one search at its end:
+  // until then the cloud is the initial one, no estimate.
+  bool awaiting_search() const { return global_phase_ && options_.defer_look_around; }
   // The refined places of the last settle (ParticleFilterOptions::settle_after), best
   // first (score: the log-likelihood of every recent scan), before the margin; empty
   // before one.

@@ -1,10 +1,12 @@
 #include "client/sim/sim_robot.h"
 
+#include <stdexcept>
 #include <thread>
 
 #include <spdlog/spdlog.h>
 
 #include "common/raycast/sweep_ray_caster.h"
+#include "client/sim/localization_trials.h"
 #include "protocol/map_codec.h"
 
 namespace fleetmap {
@@ -23,8 +25,11 @@ SimRobot::SimRobot(RobotClient& client, const Map& world, Pose start, const Map&
       pursuit_(o.pursuit),
       rng_(o.seed + 2),
       map_(first_map) {
-  // The preset that localizes best on the real maps (bench-localization, docs/localization.md).
-  loc::ParticleFilterOptions fo = loc::ParticleFilterOptions::robust_search();
+  // A preset that localizes on the real maps (bench-localization, docs/localization.md).
+  const std::optional<loc::ParticleFilterOptions> preset = loc::preset(o.localizer);
+  if (!preset || !preset->global_search)
+    throw std::invalid_argument("SimRobotOptions.localizer: expected search or fast, got " + o.localizer);
+  loc::ParticleFilterOptions fo = *preset;
   fo.particles = o.global_particles;
   fo.beams = o.laser.beams;
   fo.fov = o.laser.fov;
@@ -54,6 +59,7 @@ std::optional<int> SimRobot::localize(int max_updates) {
     const Odometry odo = drive_.step(0, rate, turn / rate);
     filter_->predict(odo);
     filter_->update(laser_.scan(drive_.pose()), compass());
+    if (filter_->awaiting_search()) continue;  // no estimate before the look around's search
     const loc::PoseEstimate e = filter_->estimate();
     // Look-alike places (identical rooms, a row of identical doors): say so and keep
     // localizing rather than report one of them as the pose.

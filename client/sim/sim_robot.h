@@ -8,6 +8,7 @@
 #include <atomic>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "client/sim/laser_simulator.h"
 #include "client/localization/lost_detector.h"
@@ -24,6 +25,9 @@ struct SimRobotOptions {
   double laser_height = 0.3;         // hL
   localization::LaserSimulatorOptions laser;  // NL, FOV, sigma_L, people
   double compass_sigma_deg = 1.0;    // compass noise (the filter assumes +-3 degrees)
+  // The filter preset of global localization (localization_trials.h, preset()): search
+  // or fast (docs/localization.md, "Presets").
+  std::string localizer = "search";
   size_t global_particles = 6000;    // NP of global localization
   size_t tracking_particles = 1000;  // max NP once localized (KLD sampling)
   double step_s = 0.1;               // simulation and control period

@@ -248,12 +248,14 @@ TEST(ParticleFilter, DeferredLookAroundSearchesOnceAtItsEnd) {
       if (u < 7) {
         EXPECT_TRUE(f.last_candidates().empty()) << turns << " turns, update " << u;
         EXPECT_TRUE(f.searching());
+        EXPECT_TRUE(f.awaiting_search());
         EXPECT_EQ(f.weights(), before) << "the cloud waits for the search";
       }
     }
     if (turns == 6) {
       EXPECT_FALSE(f.last_candidates().empty());
       EXPECT_FALSE(f.searching());
+      EXPECT_FALSE(f.awaiting_search());
     } else {  // drives after two turns: the step searches on the three turns' scans and itself
       const Odometry ahead{0.5, 0, 0};
       truth = compose(truth, ahead);
