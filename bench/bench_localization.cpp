@@ -137,6 +137,9 @@ int main(int argc, char** argv) {
   app.add_option("--search-clusters", s.search_clusters,
                  "of those, the places that get particles, for every preset but seed (default: the preset's)")
       ->check(CLI::PositiveNumber);
+  app.add_option("--search-particles", s.search_particles,
+                 "particles spread over those places, for every preset but seed (default: the preset's)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--tempering-ess", s.tempering_ess,
                  "adaptive tempering's share of effective particles, for every preset but seed (0: none; default: "
                  "the preset's)")
@@ -159,6 +162,14 @@ int main(int argc, char** argv) {
   app.add_option("--search-drops-foreground", s.search_drops_foreground,
                  "1: the searches leave out returns in front of the map (people; foreground.h), 0: they keep them, for "
                  "every preset but seed (default: the preset's)")
+      ->check(CLI::Range(0, 1));
+  app.add_option("--short-only-foreground", s.short_only_foreground,
+                 "1: --short-beyond applies only to returns in front of the map (people; foreground.h), 0: to every "
+                 "beam, for every preset (default: the preset's)")
+      ->check(CLI::Range(0, 1));
+  app.add_option("--search-short-only-foreground", s.search_short_only_foreground,
+                 "1: the search's rerank and the weighing of its cloud let only returns in front of the map stop "
+                 "short, 0: as the sensor model, for every preset but seed (default: the preset's)")
       ->check(CLI::Range(0, 1));
   app.add_option("--foreground-width", s.foreground_width,
                  "metres: the widest run of returns counted as foreground (default: the preset's)")

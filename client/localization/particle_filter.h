@@ -131,6 +131,10 @@ struct ParticleFilterOptions {
   // Whether the searches (global and settling) leave out returns standing in front of
   // the map (foreground.h: people): in the open, each costs the truth the field's floor.
   bool search_drops_foreground = false;
+  // Whether the search's rerank and the weighing of its cloud on the kept scans let only
+  // foreground beams stop short (SensorModelOptions::short_only_foreground); tracking
+  // keeps the sensor options as they are.
+  bool search_short_only_foreground = false;
   ForegroundOptions foreground;
   double turn_in_place = 0.05;        // metres: below, a step's turn comes from its scans
   double search_sd_xy = 0.1;          // metres: spread of a cluster (the field's cell)
@@ -277,6 +281,7 @@ class ParticleFilter {
   ParticleFilterOptions options_;
   std::vector<double> beams_;
   SensorModel sensor_;
+  SensorModel search_sensor_;  // the rerank's and the searched cloud's (search_short_only_foreground)
   MotionModel motion_;
   CompassPrior compass_;
   std::shared_ptr<const RayCaster> caster_;
@@ -287,7 +292,11 @@ class ParticleFilter {
     Odometry since_previous;  // odometry from the previous scan to this one
     std::vector<double> ranges;
     std::optional<double> compass;  // the reading taken with the scan
+    std::vector<uint8_t> foreground;  // per beam (foreground.h); empty: not looked for
+    const uint8_t* in_front() const { return foreground.empty() ? nullptr : foreground.data(); }
   };
+  // A scan's foreground, when an option uses it (else empty).
+  std::vector<uint8_t> foreground_of(const std::vector<double>& ranges) const;
   bool global_phase_ = false;
   std::optional<double> init_compass_;  // the reading of init_global
   Odometry since_scan_;                 // odometry since the last scan, in the global phase

@@ -41,8 +41,9 @@ double SensorModel::likelihood(double delta) const {
   return normal_peak_ * std::exp(-delta * delta * inv_two_var_) + uniform_terms(delta);
 }
 
-double SensorModel::log_likelihood(double delta) const {
-  delta = clamp_short(delta);
+double SensorModel::log_likelihood(double delta) const { return log_likelihood_of_delta(clamp_short(delta)); }
+
+double SensorModel::log_likelihood_of_delta(double delta) const {
   const double q = delta * delta * inv_two_var_;
   const double u = uniform_terms(delta);
   const double log_normal = log_normal_peak_ - q;
@@ -53,32 +54,36 @@ double SensorModel::log_likelihood(double delta) const {
   return hi + std::log1p(std::exp(lo - hi));
 }
 
-double SensorModel::log_weight(const double* measured, const double* synthetic, size_t n) const {
+double SensorModel::log_weight(const double* measured, const double* synthetic, size_t n,
+                               const uint8_t* foreground) const {
   if (options_.combination == BeamCombination::Product) {
     double s = 0;
-    for (size_t j = 0; j < n; ++j) s += log_likelihood(measured[j] - synthetic[j]);
+    for (size_t j = 0; j < n; ++j) s += log_likelihood_of_delta(beam_delta(measured[j], synthetic[j], foreground, j));
     return s;
   }
   // seed 000 eq. (6): 1 / sum_j 1/L_j. In doubles while every 1/L_j is finite (the usual
   // case: with sigma_m 0.5 m and RMAX 15 m the exponent is at most 450), else in logs.
   double inv_sum = 0;
   for (size_t j = 0; j < n; ++j) {
-    const double d = clamp_short(measured[j] - synthetic[j]);
+    const double d = beam_delta(measured[j], synthetic[j], foreground, j);
     const double q = d * d * inv_two_var_;
-    if (q > kMaxExponent) return log_weight_harmonic_slow(measured, synthetic, n);
+    if (q > kMaxExponent) return log_weight_harmonic_slow(measured, synthetic, n, foreground);
     inv_sum += 1 / (normal_peak_ * std::exp(-q) + uniform_terms(d));
   }
   if (n == 0) return 0;
   return -std::log(inv_sum);
 }
 
-double SensorModel::log_weight_harmonic_slow(const double* measured, const double* synthetic, size_t n) const {
+double SensorModel::log_weight_harmonic_slow(const double* measured, const double* synthetic, size_t n,
+                                             const uint8_t* foreground) const {
   // -log sum_j exp(-log L_j), by the log-sum-exp trick.
   double top = kNegInf;
-  for (size_t j = 0; j < n; ++j) top = std::max(top, -log_likelihood(measured[j] - synthetic[j]));
+  for (size_t j = 0; j < n; ++j)
+    top = std::max(top, -log_likelihood_of_delta(beam_delta(measured[j], synthetic[j], foreground, j)));
   if (std::isinf(top)) return top > 0 ? kNegInf : 0.0;
   double s = 0;
-  for (size_t j = 0; j < n; ++j) s += std::exp(-log_likelihood(measured[j] - synthetic[j]) - top);
+  for (size_t j = 0; j < n; ++j)
+    s += std::exp(-log_likelihood_of_delta(beam_delta(measured[j], synthetic[j], foreground, j)) - top);
   return -(top + std::log(s));
 }
 

@@ -36,6 +36,7 @@
 // people hide most beams. Readings longer than expected (through a wall) keep the full
 // penalty, so a pose in open space does not win by "explaining" every wall as a person.
 #include <cstddef>
+#include <cstdint>
 
 namespace fleetmap::localization {
 
@@ -54,6 +55,10 @@ struct SensorModelOptions {
   double gamma = 0.0;
   // Not in the seed: delta = max(delta, -short_beyond) (metres; 0 keeps eq. (5) exactly).
   double short_beyond = 0.0;
+  // Not in the seed: short_beyond applies only to beams flagged foreground (foreground.h,
+  // people); the others keep eq. (5) as written. On open ground a flat short term lets a
+  // wrong place call far walls people (docs/localization.md, "Short only in front").
+  bool short_only_foreground = false;
   BeamCombination combination = BeamCombination::Harmonic;
 };
 
@@ -69,14 +74,25 @@ class SensorModel {
 
   // The logarithm of the factor of eq. (6) (or of the product) that multiplies the
   // previous weight, for n beams: measured[j] against synthetic[j].
-  double log_weight(const double* measured, const double* synthetic, size_t n) const;
+  // foreground (optional, per beam, foreground.h): which beams short_only_foreground lets
+  // stop short.
+  double log_weight(const double* measured, const double* synthetic, size_t n,
+                    const uint8_t* foreground = nullptr) const;
 
   const SensorModelOptions& options() const { return options_; }
 
  private:
+  double log_likelihood_of_delta(double delta) const;  // log_likelihood without the clamp
   double clamp_short(double delta) const { return delta < short_floor_ ? short_floor_ : delta; }
   double uniform_terms(double delta) const;  // beta U(-RMAX, 0) + gamma U(-RMAX, RMAX)
-  double log_weight_harmonic_slow(const double* measured, const double* synthetic, size_t n) const;
+  double log_weight_harmonic_slow(const double* measured, const double* synthetic, size_t n,
+                                  const uint8_t* foreground) const;
+  // The beam's eq. (4) delta, clamped by short_beyond where it applies to the beam.
+  double beam_delta(double measured, double synthetic, const uint8_t* foreground, size_t j) const {
+    const double d = measured - synthetic;
+    if (options_.short_only_foreground && !(foreground && foreground[j])) return d;
+    return clamp_short(d);
+  }
 
   SensorModelOptions options_;
   double normal_peak_;      // alpha / (sqrt(2 pi) sigma_m)

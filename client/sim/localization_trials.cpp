@@ -429,15 +429,18 @@ ParticleFilterOptions trial_filter(const TrialSettings& base, const std::string&
   f.threads = base.filter.threads;
   f.kld.max_particles = base.filter.particles;
   if (base.short_beyond >= 0) f.sensor.short_beyond = base.short_beyond;
+  if (base.short_only_foreground >= 0) f.sensor.short_only_foreground = base.short_only_foreground > 0;
   if (name == "seed") return f;  // the baseline printed beside the others stays the seed's method
   if (base.search_updates >= 0) f.search_updates = static_cast<size_t>(base.search_updates);
   if (base.search_candidates > 0) f.search_candidates = base.search_candidates;
   if (base.search_clusters > 0) f.search_clusters = base.search_clusters;
+  if (base.search_particles > 0) f.search_particles = base.search_particles;
   if (base.tempering_ess >= 0) f.tempering_ess = base.tempering_ess;
   if (base.tempering_stages >= 0) f.tempering_stages = base.tempering_stages;
   if (base.settle_after >= 0) f.settle_after = static_cast<size_t>(base.settle_after);
   if (base.search_sigma > 0) f.search.sigma = base.search_sigma;
   if (base.search_max_penalty > 0) f.search.max_penalty = base.search_max_penalty;
+  if (base.search_short_only_foreground >= 0) f.search_short_only_foreground = base.search_short_only_foreground > 0;
   if (base.search_drops_foreground >= 0) f.search_drops_foreground = base.search_drops_foreground > 0;
   if (base.foreground_width > 0) f.foreground.max_width = base.foreground_width;
   return f;
@@ -450,11 +453,13 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
   s.filter = trial_filter(base, name);
   const ParticleFilterOptions& f = s.filter;
   std::fprintf(out,
-               "-- %s: %s, gamma %.2g, short beyond %.2g m, tempering ESS %.2g x %d stages, init density %.2g /m2, "
-               "roughening %.2g%s%s\n",
-               name.c_str(), describe(f), f.sensor.gamma, f.sensor.short_beyond, f.tempering_ess, f.tempering_stages,
+               "-- %s: %s, gamma %.2g, short beyond %.2g m%s, tempering ESS %.2g x %d stages, init density %.2g /m2, "
+               "roughening %.2g%s%s%s\n",
+               name.c_str(), describe(f), f.sensor.gamma, f.sensor.short_beyond,
+               f.sensor.short_only_foreground ? " (foreground only)" : "", f.tempering_ess, f.tempering_stages,
                f.global_density, f.roughening, f.global_search ? ", global search (likelihood field, ray-cast rerank)" : "",
-               f.global_search && f.search_drops_foreground ? ", foreground left out of the search" : "");
+               f.global_search && f.search_drops_foreground ? ", foreground left out of the search" : "",
+               f.global_search && f.search_short_only_foreground ? ", searched cloud: short only in front" : "");
   std::fflush(out);
   std::optional<GlobalResult> result;
   if (global) {

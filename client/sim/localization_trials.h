@@ -55,11 +55,15 @@ struct TrialSettings {
   LostDetectorOptions lost;
   // The sensor model's short_beyond for every preset (sensor_model.h); negative: the preset's.
   double short_beyond = -1;
+  // SensorModelOptions::short_only_foreground for every preset: 1 on, 0 off, negative: the preset's.
+  int short_only_foreground = -1;
+  // ParticleFilterOptions::search_short_only_foreground for every preset but seed: 1 on, 0 off, negative: the preset's.
+  int search_short_only_foreground = -1;
   // Overrides of ParticleFilterOptions for every preset but `seed` (the baseline):
   // search_updates, tempering_ess, tempering_stages and settle_after (negative: the preset's),
-  // search_candidates and search_clusters (0: the preset's).
+  // search_candidates, search_clusters and search_particles (0: the preset's).
   int search_updates = -1;
-  size_t search_candidates = 0, search_clusters = 0;
+  size_t search_candidates = 0, search_clusters = 0, search_particles = 0;
   double tempering_ess = -1;
   int tempering_stages = -1;
   int settle_after = -1;  // ParticleFilterOptions::settle_after (negative: the preset's)

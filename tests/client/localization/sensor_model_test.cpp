@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -117,6 +118,34 @@ TEST(SensorModel, ShortBeyondFlattensReadingsFarShorterThanExpected) {
               1e-12);
   o.short_beyond = -1;
   EXPECT_THROW(SensorModel{o}, std::invalid_argument);
+}
+
+TEST(SensorModel, ShortOnlyForegroundFlattensFlaggedBeamsOnly) {
+  SensorModelOptions o;
+  o.short_beyond = 0.5;
+  o.short_only_foreground = true;
+  const SensorModel m(o);
+  const SensorModel seed;
+  // Two beams 3 m short, the first flagged foreground: it weighs as 0.5 m short, the
+  // other as eq. (5) has it. Without a mask neither is flattened.
+  const std::vector<double> measured{2.0, 2.0}, synthetic{5.0, 5.0}, half_short{4.5, 2.0};
+  const std::vector<uint8_t> front{1, 0};
+  EXPECT_NEAR(m.log_weight(measured.data(), synthetic.data(), 2, front.data()),
+              seed.log_weight(half_short.data(), synthetic.data(), 2), 1e-12);
+  EXPECT_NEAR(m.log_weight(measured.data(), synthetic.data(), 2), seed.log_weight(measured.data(), synthetic.data(), 2),
+              1e-12);
+  // A flagged beam that passes through the particle's wall keeps the full penalty.
+  const std::vector<double> through{7.0, 5.0};
+  EXPECT_NEAR(m.log_weight(through.data(), synthetic.data(), 2, front.data()),
+              seed.log_weight(through.data(), synthetic.data(), 2), 1e-12);
+  // The product combination as well.
+  o.combination = BeamCombination::Product;
+  const SensorModel p(o);
+  SensorModelOptions po;
+  po.combination = o.combination;
+  const SensorModel plain(po);
+  EXPECT_NEAR(p.log_weight(measured.data(), synthetic.data(), 2, front.data()),
+              plain.log_weight(half_short.data(), synthetic.data(), 2), 1e-12);
 }
 
 // A wall across the view at x = 4 m seen from (x, 0) facing +x, and a crowd lined up
