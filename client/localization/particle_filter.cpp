@@ -205,9 +205,11 @@ const GlobalSearch& ParticleFilter::global_search() {
 }
 
 std::vector<uint8_t> ParticleFilter::foreground_of(const std::vector<double>& ranges) const {
-  if (!options_.search_drops_foreground && !options_.sensor.short_only_foreground &&
-      !options_.search_short_only_foreground)
-    return {};
+  // Only where an option reads it: the searches read the global phase's scans (and the
+  // recent ones when settling), the sensor model every scan. Tracking with `fast` skips it.
+  const bool searched = (options_.search_drops_foreground || options_.search_short_only_foreground) &&
+                        (global_phase_ || options_.settle_after > 0);
+  if (!searched && !options_.sensor.short_only_foreground) return {};
   return foreground_returns(ranges, beams_, options_.laser.rmax, options_.foreground);
 }
 

@@ -295,7 +295,7 @@ class ParticleFilter {
     std::vector<uint8_t> foreground;  // per beam (foreground.h); empty: not looked for
     const uint8_t* in_front() const { return foreground.empty() ? nullptr : foreground.data(); }
   };
-  // A scan's foreground, when an option uses it (else empty).
+  // A scan's foreground, when an option will read it (else empty).
   std::vector<uint8_t> foreground_of(const std::vector<double>& ranges) const;
   bool global_phase_ = false;
   std::optional<double> init_compass_;  // the reading of init_global

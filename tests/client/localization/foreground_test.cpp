@@ -72,25 +72,39 @@ TEST(Foreground, ARunNearerThanOnlyOneNeighbourIsNot) {
 }
 
 // Scans of GDC1 with ten walking people, from start poses drawn as bench-localization draws them.
+struct PeopleScan {
+  Pose truth;
+  std::vector<double> ranges, bare;  // with the people; the walls alone, without noise
+  std::vector<double> beams;
+};
+
 struct PeopleScans {
   Map map = read_amrl_file(std::string(FLEETMAP_REAL_MAPS) + "/GDC1.vectormap.txt", AmrlOptions{});
   std::shared_ptr<GridRayCaster> world = std::make_shared<GridRayCaster>(map, RayCasterOptions{0.3, 15.0});
   FreeSpace free_space{map};
+
+  PeopleScan scan(uint64_t seed) const {
+    std::mt19937_64 rng(seed);
+    LaserSimulatorOptions lo;
+    lo.people = 10;
+    LaserSimulator laser(world, lo, rng());
+    PeopleScan s;
+    s.truth = pick_start_pose(free_space, *world, laser.beam_angles(), 0.5, 0.5, rng);
+    s.ranges = laser.scan(s.truth);
+    s.bare = laser.true_scan(s.truth);
+    s.beams = laser.beam_angles();
+    return s;
+  }
 };
 
 TEST(Foreground, OnGdc1WithPeopleMostFlaggedBeamsArePeople) {
-  const PeopleScans s;
+  const PeopleScans scans;
   size_t people = 0, people_flagged = 0, walls = 0, walls_flagged = 0;
   for (int t = 0; t < 20; ++t) {
-    std::mt19937_64 rng(300 + t);
-    LaserSimulatorOptions lo;
-    lo.people = 10;
-    LaserSimulator laser(s.world, lo, rng());
-    const Pose truth = pick_start_pose(s.free_space, *s.world, laser.beam_angles(), 0.5, 0.5, rng);
-    const std::vector<double> r = laser.scan(truth), bare = laser.true_scan(truth);
-    const std::vector<uint8_t> f = foreground_returns(r, laser.beam_angles(), 15.0);
-    for (size_t j = 0; j < r.size(); ++j) {
-      const bool person = r[j] < bare[j] - 0.3;  // well short of the wall: the noise is 0.05 m
+    const PeopleScan s = scans.scan(300 + t);
+    const std::vector<uint8_t> f = foreground_returns(s.ranges, s.beams, 15.0);
+    for (size_t j = 0; j < s.ranges.size(); ++j) {
+      const bool person = s.ranges[j] < s.bare[j] - 0.3;  // well short of the wall: the noise is 0.05 m
       (person ? people : walls) += 1;
       (person ? people_flagged : walls_flagged) += f[j];
     }
@@ -107,30 +121,25 @@ TEST(Foreground, OnGdc1WithPeopleMostFlaggedBeamsArePeople) {
 }
 
 TEST(Foreground, TheSearchWithoutItFindsTheTruthWithPeople) {
-  const PeopleScans s;
+  const PeopleScans scans;
   GlobalSearchOptions so;
   so.field.margin = 15.0;
-  const GlobalSearch search(s.map, so);
+  const GlobalSearch search(scans.map, so);
   int with = 0, without = 0;
   const int trials = 12;
   for (int t = 0; t < trials; ++t) {
-    std::mt19937_64 rng(400 + t);
-    LaserSimulatorOptions lo;
-    lo.people = 10;
-    LaserSimulator laser(s.world, lo, rng());
-    const Pose truth = pick_start_pose(s.free_space, *s.world, laser.beam_angles(), 0.5, 0.5, rng);
-    std::vector<double> r = laser.scan(truth);
+    PeopleScan s = scans.scan(400 + t);
     auto found = [&](const std::vector<double>& ranges) {
-      const std::vector<Candidate> c = search.search(ranges, laser.beam_angles(), 15.0, truth.theta, deg2rad(3.0), 500);
+      const std::vector<Candidate> c = search.search(ranges, s.beams, 15.0, s.truth.theta, deg2rad(3.0), 500);
       return std::any_of(c.begin(), c.end(), [&](const Candidate& x) {
-        return distance(x.pose, truth) < 0.6 && std::fabs(angle_diff(x.pose.theta, truth.theta)) < deg2rad(2.0);
+        return distance(x.pose, s.truth) < 0.6 && std::fabs(angle_diff(x.pose.theta, s.truth.theta)) < deg2rad(2.0);
       });
     };
-    with += found(r);
-    const std::vector<uint8_t> f = foreground_returns(r, laser.beam_angles(), 15.0);
-    for (size_t j = 0; j < r.size(); ++j)
-      if (f[j]) r[j] = 15.0;
-    without += found(r);
+    with += found(s.ranges);
+    const std::vector<uint8_t> f = foreground_returns(s.ranges, s.beams, 15.0);
+    for (size_t j = 0; j < s.ranges.size(); ++j)
+      if (f[j]) s.ranges[j] = 15.0;  // as no return
+    without += found(s.ranges);
   }
   std::printf("truth among 500 candidates: with the foreground %d of %d, without %d\n", with, trials, without);
   // Measured: 1 and 10 of 12.
