@@ -174,6 +174,10 @@ int main(int argc, char** argv) {
   app.add_option("--foreground-width", s.foreground_width,
                  "metres: the widest run of returns counted as foreground (default: the preset's)")
       ->check(CLI::PositiveNumber);
+  app.add_option("--rivals", s.rivals,
+                 "1: the ambiguity verdict also scores the last search's best places the cloud lost (ambiguity.h), "
+                 "0: only the cloud's, for every preset but seed (default: the preset's)")
+      ->check(CLI::Range(0, 1));
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_option("--short-beyond", s.short_beyond,
@@ -195,6 +199,10 @@ int main(int argc, char** argv) {
   app.add_flag("--explain", s.explain,
                "after each global trial out of bounds at the end: whether the scans favour the estimate or the truth "
                "(each refined; a wrong place that fits better is the model's failure, not the filter's)");
+  s.twins = true;
+  app.add_flag("--twins,!--no-twins", s.twins,
+               "check each start for a twin (a place 1 m or more away whose noiseless scans along the same path match; "
+               "twin_places.h), and score ambiguous as the right answer there and success elsewhere (default on)");
   std::string csv;
   app.add_option("--csv", csv,
                  "write a row per global trial to this file (map, config, seed, trial, start, outcome, updates, "

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <unordered_map>
 
+#include "client/localization/place_refinement.h"
+
 namespace fleetmap::localization {
 
 namespace {
@@ -106,32 +108,66 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
 }
 
 Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<double>& weights,
-                         const AmbiguityOptions& o, const PlaceScore& score) {
+                         const AmbiguityOptions& o, const PlaceScore& score, const std::vector<Pose>& rivals,
+                         const PlaceScore& residual) {
   const PlaceCandidates c = find_candidates(poses, weights, o, o.refine);
   // One candidate: nothing to compare. A diffuse cloud: the candidates are a sample of
   // many comparable lumps, and the best of them says nothing about the rest.
-  if (c.list.size() < 2 || c.covered < o.diffuse_share) return all_places(c);
+  const bool with_rivals = o.rivals && !rivals.empty() && residual && !c.list.empty();
+  if ((c.list.size() < 2 && !with_rivals) || c.covered < o.diffuse_share) return all_places(c);
   // Each candidate at its best pose: a cluster's mean may sit a little off the pose its
   // best particles found, and 0.1 m off costs more per beam than a look-alike place.
   std::vector<double> ll;
+  std::vector<Pose> at;  // each candidate's best pose
   for (const PlaceCandidate& p : c.list) {
     double best = score(p.mean);
-    for (size_t i : p.heaviest) best = std::max(best, score(poses[i]));
+    at.push_back(p.mean);
+    for (size_t i : p.heaviest) {
+      const double s = score(poses[i]);
+      if (s > best) best = s, at.back() = poses[i];
+    }
     ll.push_back(best);
   }
-  std::vector<double> sorted = ll;
-  std::sort(sorted.begin(), sorted.end(), std::greater<>());
-  const double best = sorted[0];
-  Ambiguity out;
-  out.runner_up_gap = best - sorted[1];
-  out.heaviest_gap = best - ll[0];
-  for (size_t k = 0; k < c.list.size(); ++k) {
-    if (k > 0 && !(ll[k] >= best - o.margin_per_beam)) continue;
-    out.places.push_back(c.list[k].mean);
-    out.weights.push_back(c.list[k].share);
+  Ambiguity out = all_places(c);
+  if (ll.size() >= 2) {
+    std::vector<double> sorted = ll;
+    std::sort(sorted.begin(), sorted.end(), std::greater<>());
+    const double best = sorted[0];
+    out = {};
+    out.runner_up_gap = best - sorted[1];
+    out.heaviest_gap = best - ll[0];
+    for (size_t k = 0; k < c.list.size(); ++k) {
+      if (k > 0 && !(ll[k] >= best - o.margin_per_beam)) continue;
+      out.places.push_back(c.list[k].mean);
+      out.weights.push_back(c.list[k].share);
+    }
+    // The heaviest explains the scans worse than the best place: that one stays beside it
+    // (it is within the margin of itself), so the verdict is ambiguous.
   }
-  // The heaviest explains the scans worse than the best place: that one stays beside it
-  // (it is within the margin of itself), so the verdict is ambiguous.
+  if (!with_rivals) return out;
+  // Rivals, each refined, against the best candidate refined likewise (or a rival would
+  // beat it by refinement alone), by residual: its peak is narrow, so the steps go finer
+  // than the filter's settling. One that comes onto a place already held is that place.
+  RefineOptions fine;
+  fine.min_step_xy = 0.003;
+  fine.min_step_theta = deg2rad(0.03);
+  fine.max_moves = 80;
+  const size_t top = static_cast<size_t>(std::max_element(ll.begin(), ll.end()) - ll.begin());
+  const RefinedPlace reference = refine_place(at[top], residual, fine);
+  std::vector<Pose> held = at;
+  held.push_back(reference.pose);
+  for (const PlaceCandidate& p : c.list) held.push_back(p.mean);
+  const auto apart = [&](const Pose& q) {
+    return std::all_of(held.begin(), held.end(), [&](const Pose& p) { return distance(p, q) > o.min_separation; });
+  };
+  for (size_t k = 0; k < rivals.size() && k < o.max_rivals; ++k) {
+    if (!apart(rivals[k])) continue;
+    const RefinedPlace r = refine_place(rivals[k], residual, fine);
+    if (!apart(r.pose) || !(r.score >= reference.score - o.rival_margin_z2)) continue;
+    held.push_back(r.pose);
+    out.places.push_back(r.pose);
+    out.weights.push_back(0);
+  }
   return out;
 }
 

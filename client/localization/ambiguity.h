@@ -49,6 +49,28 @@ struct AmbiguityOptions {
   size_t scans = 10;              // recent scans scored: a look around's and the first steps
   size_t refine = 4;              // heaviest particles of a candidate scored beside its mean
   double diffuse_share = 0.5;     // of the total weight held by the candidates
+  // Rivals (Likelihood rule): places outside the cloud, given by the caller (the
+  // filter's: the last global search's best distinct places, carried by the odometry
+  // since). Resampling can starve one of two identical places of every particle: in a
+  // hall of pillars on a grid, 6 of the 11 starts with a twin ended on the wrong one,
+  // reported as the pose (docs/localization.md, "Twins"). Each rival is refined to its
+  // best pose nearby (place_refinement.h) and compared with the best candidate, refined
+  // likewise, so the verdict rests on the scans rather than on what survived.
+  //
+  // The comparison is sharper than the margin above: by the residual, the mean over the
+  // recent beams of min((measured - cast) / rival_sigma)^2, rival_max_z2), a rival is a
+  // place when its residual exceeds the best candidate's by at most rival_margin_z2 (0.1:
+  // an RMS difference of a third of the laser's noise). The filter's tempered model (the
+  // margin above) scored look-alikes on the campus, 1.4-1.9 m along a facade, within
+  // 0.005 per beam of the truth; by the residual they are 0.24-1.9 apart.
+  bool rivals = true;
+  size_t max_rivals = 7;
+  double rival_sigma = 0.05;   // metres: the laser's noise, sigma_L (seed 000 section 4.1)
+  double rival_max_z2 = 9;
+  double rival_margin_z2 = 0.05;
+  // The filter keeps as rivals the search's places within this of its best, per beam of
+  // its rerank (unrefined, on the search's grid: loose).
+  double rival_search_margin_per_beam = 0.2;
 };
 
 struct Ambiguity {
@@ -69,8 +91,12 @@ using PlaceScore = std::function<double(const Pose&)>;
 // (options.rule is not read).
 Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<double>& weights,
                          const AmbiguityOptions& options = {});
-// The Likelihood rule with the given score (options.rule is not read).
+// The Likelihood rule with the given score (options.rule is not read). rivals: places
+// outside the cloud (AmbiguityOptions::rivals), compared with the best candidate by
+// residual (the negated residual of a pose, higher is better); a rival within the margin
+// more than min_separation from the others is a place with no weight.
 Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<double>& weights,
-                         const AmbiguityOptions& options, const PlaceScore& score);
+                         const AmbiguityOptions& options, const PlaceScore& score,
+                         const std::vector<Pose>& rivals = {}, const PlaceScore& residual = {});
 
 }  // namespace fleetmap::localization

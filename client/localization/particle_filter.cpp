@@ -170,6 +170,7 @@ void ParticleFilter::init_global(std::optional<double> compass) {
   since_scan_ = {};
   history_.clear();
   recent_.clear();
+  rivals_.clear();
   since_recent_ = {};
 }
 
@@ -264,9 +265,22 @@ bool ParticleFilter::reseed_from_search(double compass) {
                  normalize_angle(p.theta + options_.search_sd_theta * n01(rng_))};
   }
   weights_.assign(n, 1.0 / n);
+  keep_rivals(found, static_cast<double>(history_.size() * beams_.size()));
   candidates_ = std::move(found);
   searched_at_ = at;
   return true;
+}
+
+void ParticleFilter::keep_rivals(const std::vector<Candidate>& ranked, double beams) {
+  rivals_.clear();
+  const AmbiguityOptions& o = options_.ambiguity;
+  if (!o.rivals || ranked.empty()) return;
+  const double floor = ranked.front().score - o.rival_search_margin_per_beam * beams;
+  for (const Candidate& c : ranked) {
+    if (rivals_.size() >= o.max_rivals || c.score < floor) break;
+    if (std::all_of(rivals_.begin(), rivals_.end(), [&](const Pose& r) { return distance(r, c.pose) > o.min_separation; }))
+      rivals_.push_back(c.pose);
+  }
 }
 
 void ParticleFilter::settle(double compass) {
@@ -333,6 +347,7 @@ void ParticleFilter::init_pose(const Pose& pose, double sd_xy, double sd_theta) 
   global_phase_ = false;
   from_global_ = false;
   recent_.clear();
+  rivals_.clear();
   since_recent_ = {};
   std::normal_distribution<double> n01(0.0, 1.0);
   for (Pose& p : poses_)
@@ -350,6 +365,7 @@ void ParticleFilter::set_particles(std::vector<Pose> poses, std::vector<double> 
   weights_ = std::move(weights);
   global_phase_ = false;
   from_global_ = false;
+  rivals_.clear();
 }
 
 void ParticleFilter::predict(const Odometry& odometry) {
@@ -365,6 +381,7 @@ void ParticleFilter::predict(const Odometry& odometry) {
     std::mt19937_64& rng = chunk_rngs_[k];
     for (size_t i = begin; i < end; ++i) poses_[i] = motion_.sample(poses_[i], odometry, rng);
   });
+  for (Pose& r : rivals_) r = compose(r, odometry);  // as measured: the verdict refines them
 }
 
 void ParticleFilter::update(const std::vector<double>& ranges, std::optional<double> compass) {
@@ -593,9 +610,28 @@ PlaceScore ParticleFilter::recent_fit() const {
   };
 }
 
+PlaceScore ParticleFilter::recent_residual() const {
+  const AmbiguityOptions& o = options_.ambiguity;
+  const double beams = static_cast<double>(std::max<size_t>(1, recent_.size() * beams_.size()));
+  auto synthetic = std::make_shared<std::vector<double>>(beams_.size());
+  return [this, offsets = recent_offsets(), synthetic, beams, &o](const Pose& place) {
+    double sum = 0;
+    for (size_t k = 0; k < recent_.size() && k < offsets.size(); ++k) {
+      const Pose p = compose(place, offsets[k]);
+      caster_->cast_scan(p.point(), p.theta, beams_, synthetic->data());
+      for (size_t j = 0; j < beams_.size(); ++j) {
+        const double z = (recent_[k].ranges[j] - (*synthetic)[j]) / o.rival_sigma;
+        sum += std::min(z * z, o.rival_max_z2);
+      }
+    }
+    return -sum / beams;
+  };
+}
+
 Ambiguity ParticleFilter::ambiguity(AmbiguityRule rule) const {
   if (rule == AmbiguityRule::Weight || recent_.empty()) return find_ambiguity(poses_, weights_, options_.ambiguity);
-  return find_ambiguity(poses_, weights_, options_.ambiguity, recent_fit());
+  return find_ambiguity(poses_, weights_, options_.ambiguity, recent_fit(), rivals_,
+                        rivals_.empty() ? PlaceScore{} : recent_residual());
 }
 
 PoseEstimate ParticleFilter::estimate() const {

@@ -240,6 +240,9 @@ class ParticleFilter {
   // first (score: the log-likelihood of every recent scan), before the margin; empty
   // before one.
   const std::vector<Candidate>& last_settle() const { return settled_; }
+  // The last search's places kept for the ambiguity verdict (AmbiguityOptions::rivals), where
+  // the odometry since has carried them; empty before a search.
+  const std::vector<Pose>& rivals() const { return rivals_; }
   // The log-likelihood of the recent scans (the last ambiguity.scans, each at its pose
   // from the latest stitched as for the global search) seen from `place`, the latest
   // scan's pose: what settling ranks places by, and (per beam) the Likelihood rule.
@@ -249,6 +252,10 @@ class ParticleFilter {
   // for telling a wrong place the scans favour from a truth the filter lost. Valid while
   // the filter is not updated; not thread-safe (one buffer of cast rays).
   PlaceScore recent_fit() const;
+  // The negated residual of the recent scans seen from `place` (AmbiguityOptions::rivals):
+  // the mean over their beams of min(((measured - cast) / rival_sigma)^2, rival_max_z2).
+  // Valid and thread-safe as recent_fit().
+  PlaceScore recent_residual() const;
 
  private:
   // The largest phi <= most that keeps tempering_ess of the particles effective.
@@ -311,6 +318,10 @@ class ParticleFilter {
   size_t since_global_ = 0;      // updates since init_global
   std::vector<Candidate> candidates_;
   std::vector<Candidate> settled_;
+  // The last search's best distinct places (AmbiguityOptions::rivals), best first,
+  // carried by the odometry since: the ambiguity verdict scores them beside the cloud's.
+  std::vector<Pose> rivals_;
+  void keep_rivals(const std::vector<Candidate>& ranked, double beams);
   // The last ambiguity.scans scans (their odometry from the scan before and compass
   // reading, as history_'s), for the ambiguity verdict; cleared by init_global and
   // init_pose, kept by set_particles and set_map.

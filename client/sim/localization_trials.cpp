@@ -9,6 +9,7 @@
 
 #include "client/sim/drive_simulator.h"
 #include "client/sim/generated_maps.h"
+#include "client/sim/twin_places.h"
 #include "client/localization/free_space.h"
 #include "client/localization/global_search.h"
 #include "client/localization/place_refinement.h"
@@ -66,6 +67,7 @@ struct GlobalRun {
   double truth_fit = NAN, estimate_fit = NAN;      // TrialSettings::explain (GlobalTrial)
   int search_rank = -2;                            // likewise
   size_t beams_hidden = 0, beams_seen = 0;         // likewise: beams a person stopped, of all
+  std::vector<Pose> path;                          // the truth at each update (twin_places.h)
 };
 
 bool within_bounds(const Pose& e, const Pose& truth) {
@@ -96,6 +98,7 @@ GlobalRun run_global_localization(const Map& map, std::shared_ptr<const RayCaste
       truth = st.truth;
       pf.predict(st.odometry);
     }
+    run.path.push_back(truth);
     const std::vector<double> ranges = laser.scan(truth);
     if (s.explain && s.laser.people > 0) {
       // Beams a person stopped: well short of the wall behind (the noise is 0.05 m).
@@ -145,6 +148,17 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
   const auto setup = Clock::now();
   const std::shared_ptr<const GlobalSearch> search = make_search(map, s.filter);
   if (search) res.setup_seconds = seconds_since(setup);
+  // The twins' own search (the default field), whatever the preset under test uses.
+  std::unique_ptr<const GlobalSearch> twin_search;
+  if (s.twins) {
+    GlobalSearchOptions so;
+    so.field.margin = world->options().rmax;
+    so.field.laser_height = world->options().laser_height;
+    so.threads = s.filter.threads;
+    twin_search = std::make_unique<const GlobalSearch>(map, so);
+    res.twins_checked = true;
+  }
+  double twin_seconds = 0;  // left out of the localizations' time
   const auto t0 = Clock::now();
   for (int t = 0; t < s.trials; ++t) {
     const auto trial_t0 = Clock::now();
@@ -189,6 +203,20 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
     res.success_weight_rule += g.outcome_weight_rule == TrialOutcome::Success;
     res.ambiguous_weight_rule += g.outcome_weight_rule == TrialOutcome::Ambiguous;
     res.wrong_weight_rule += g.outcome_weight_rule == TrialOutcome::Wrong;
+    if (twin_search) {
+      const auto twin_t0 = Clock::now();
+      const TwinCheck tc = find_twin(*world, *twin_search, run.path, beams, fo.compass_half_width);
+      g.twin = tc.twin ? 1 : 0;
+      g.twin_place = tc.place;
+      g.twin_mean_z2 = tc.mean_z2;
+      if (tc.twin) {
+        ++res.twin_starts;
+        res.twin_success += g.outcome == TrialOutcome::Success;
+        res.twin_ambiguous += g.outcome == TrialOutcome::Ambiguous;
+        res.twin_wrong += g.outcome == TrialOutcome::Wrong;
+      }
+      twin_seconds += seconds_since(twin_t0);
+    }
     res.final_error.push_back(run.error);
     switch (favoured(g, kFitTie)) {
       case Favoured::Estimate: ++res.favour_estimate; break;
@@ -213,8 +241,12 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
     if (s.per_trial && !std::isnan(g.truth_fit))
       std::fprintf(s.per_trial, "    fit per beam: truth %.4f, estimate %.4f: the scans favour %s; truth at rank %d of the last search\n",
                    g.truth_fit, g.estimate_fit, to_string(favoured(g, kFitTie)), g.search_rank);
+    if (s.per_trial && g.twin >= 0)
+      std::fprintf(s.per_trial, "    %s: the other place that fits best, (%.2f, %.2f, %.1f deg), %.3f per beam\n",
+                   g.twin ? "a twin" : "no twin", g.twin_place.x, g.twin_place.y, rad2deg(g.twin_place.theta),
+                   g.twin_mean_z2);
   }
-  res.seconds = seconds_since(t0);
+  res.seconds = seconds_since(t0) - twin_seconds;
   return res;
 }
 
@@ -443,6 +475,7 @@ ParticleFilterOptions trial_filter(const TrialSettings& base, const std::string&
   if (base.search_short_only_foreground >= 0) f.search_short_only_foreground = base.search_short_only_foreground > 0;
   if (base.search_drops_foreground >= 0) f.search_drops_foreground = base.search_drops_foreground > 0;
   if (base.foreground_width > 0) f.foreground.max_width = base.foreground_width;
+  if (base.rivals >= 0) f.ambiguity.rivals = base.rivals > 0;
   return f;
 }
 
@@ -491,6 +524,13 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
                  "(ambiguity.h) on the same trials: success %d, ambiguous %d, wrong %d\n",
                  g.success, g.ambiguous, g.wrong, g.trials, g.success_weight_rule, g.ambiguous_weight_rule,
                  g.wrong_weight_rule);
+    if (g.twins_checked)
+      std::fprintf(out,
+                   "  starts with a twin (another place whose noiseless scans along the same path differ by an RMS "
+                   "under a third of the noise; twin_places.h): %d of %d, on which ambiguous %d (right), success %d "
+                   "(a lucky pick), wrong %d; on the others success %d, ambiguous %d, wrong %d; right answers %.1f %%\n",
+                   g.twin_starts, g.trials, g.twin_ambiguous, g.twin_success, g.twin_wrong, g.success - g.twin_success,
+                   g.ambiguous - g.twin_ambiguous, g.wrong - g.twin_wrong, 100.0 * g.right() / std::max(1, g.trials));
     if (s.explain)
       std::fprintf(out,
                    "  out of bounds at the end: %d; the scans favour the estimate in %d (a wrong place fits them "
@@ -563,17 +603,24 @@ double percentile_of(std::vector<double> v, double q) {
 
 void print_table(std::FILE* out, const std::vector<TableRow>& rows) {
   std::fprintf(out, "\n| map | config | trials | success | ambiguous | wrong | weight rule: success / ambiguous / wrong "
-                    "| within, no verdict | time p50 | time p95 |\n"
-                    "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
+                    "| within, no verdict | starts with a twin | right answer | time p50 | time p95 |\n"
+                    "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
   for (const TableRow& r : rows) {
     const GlobalResult& g = r.result;
     std::vector<double> seconds;
     for (const GlobalTrial& t : g.per_trial) seconds.push_back(t.seconds);
     const double n = std::max(1, g.trials);
-    std::fprintf(out, "| %s | %s | %d | %.1f %% | %.1f %% | %.1f %% | %.1f / %.1f / %.1f %% | %.1f %% | %.2f s | %.2f s |\n",
+    // The right answer: success where the start has no twin, ambiguous where it has one.
+    char twins[32] = "-", right[32] = "-";
+    if (g.twins_checked) {
+      std::snprintf(twins, sizeof twins, "%.1f %%", 100.0 * g.twin_starts / n);
+      std::snprintf(right, sizeof right, "%.1f %%", 100.0 * g.right() / n);
+    }
+    std::fprintf(out,
+                 "| %s | %s | %d | %.1f %% | %.1f %% | %.1f %% | %.1f / %.1f / %.1f %% | %.1f %% | %s | %s | %.2f s | %.2f s |\n",
                  r.map.c_str(), r.config.c_str(), g.trials, 100.0 * g.success / n, 100.0 * g.ambiguous / n,
                  100.0 * g.wrong / n, 100.0 * g.success_weight_rule / n, 100.0 * g.ambiguous_weight_rule / n,
-                 100.0 * g.wrong_weight_rule / n, 100.0 * g.converged / n, percentile_of(seconds, 0.5),
+                 100.0 * g.wrong_weight_rule / n, 100.0 * g.converged / n, twins, right, percentile_of(seconds, 0.5),
                  percentile_of(seconds, 0.95));
   }
   std::fflush(out);
@@ -582,14 +629,15 @@ void print_table(std::FILE* out, const std::vector<TableRow>& rows) {
 void write_trials_csv(std::FILE* out, const std::vector<TableRow>& rows, uint64_t seed) {
   std::fprintf(out, "map,config,seed,trial,start_x,start_y,start_theta_deg,outcome,updates,within_from,places,"
                     "final_error_m,seconds,outcome_weight_rule,places_weight_rule,runner_up_gap,heaviest_gap,truth_fit,"
-                    "estimate_fit,search_rank\n");
+                    "estimate_fit,search_rank,twin,twin_x,twin_y,twin_mean_z2\n");
   for (const TableRow& r : rows)
     for (const GlobalTrial& t : r.result.per_trial)
-      std::fprintf(out, "%s,%s,%llu,%d,%.3f,%.3f,%.2f,%s,%d,%d,%zu,%.3f,%.3f,%s,%zu,%.4f,%.4f,%.4f,%.4f,%d\n", r.map.c_str(),
+      std::fprintf(out, "%s,%s,%llu,%d,%.3f,%.3f,%.2f,%s,%d,%d,%zu,%.3f,%.3f,%s,%zu,%.4f,%.4f,%.4f,%.4f,%d,%d,%.3f,%.3f,%.4f\n",
+                   r.map.c_str(),
                    r.config.c_str(), static_cast<unsigned long long>(seed), t.trial, t.start.x, t.start.y,
                    rad2deg(t.start.theta), to_string(t.outcome), t.updates, t.within_from, t.places, t.final_error,
                    t.seconds, to_string(t.outcome_weight_rule), t.places_weight_rule, t.runner_up_gap, t.heaviest_gap,
-                   t.truth_fit, t.estimate_fit, t.search_rank);
+                   t.truth_fit, t.estimate_fit, t.search_rank, t.twin, t.twin_place.x, t.twin_place.y, t.twin_mean_z2);
 }
 
 }  // namespace fleetmap::localization

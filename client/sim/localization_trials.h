@@ -73,10 +73,15 @@ struct TrialSettings {
   // foreground_width > 0 sets ForegroundOptions::max_width.
   int search_drops_foreground = -1;
   double foreground_width = -1;
+  // AmbiguityOptions::rivals: 1 on, 0 off, negative: the preset's.
+  int rivals = -1;
   // After each global trial whose estimate ends out of bounds: whom the scans favour, the
   // truth or the estimate (GlobalTrial::truth_fit), to tell the model's failures (no
   // filter on it could pick the truth) from the filter's (it lost a better place).
   bool explain = false;
+  // Whether each start has a twin (twin_places.h): a place no scan tells from it, where
+  // the right answer is "ambiguous". Each trial's outcome is then scored by its kind of start.
+  bool twins = false;
 };
 
 // A global trial's outcome: within bounds and staying so to the last update, with one
@@ -108,6 +113,11 @@ struct GlobalTrial {
   // reranked on cast rays (ParticleFilter::last_candidates), of the first within 0.5 m
   // and 5 degrees of the truth at that search; -1: none was; -2: no search.
   int search_rank = -2;
+  // TrialSettings::twins: 1 when the start has a twin (twin_places.h), 0 when not, -1
+  // unchecked; the other place that fits best and its mean term per beam.
+  int twin = -1;
+  Pose twin_place;
+  double twin_mean_z2 = NAN;
 };
 
 // Whom the scans favour in an explained trial: the estimate by more than `tie` per beam
@@ -129,6 +139,11 @@ struct GlobalResult {
   // search_clusters candidates (it got particles), ranked lower, or not found at all.
   int truth_in_clusters = 0, truth_ranked_out = 0, truth_not_found = 0;
   size_t beams_hidden = 0, beams_seen = 0;  // explain, with people: beams a person stopped, of all
+  // TrialSettings::twins: the starts with a twin and their outcomes. The right answer is
+  // success on a start without one and ambiguous on one with one (right()).
+  bool twins_checked = false;
+  int twin_starts = 0, twin_success = 0, twin_ambiguous = 0, twin_wrong = 0;
+  int right() const { return success - twin_success + twin_ambiguous; }
   std::vector<GlobalTrial> per_trial;
   std::vector<int> first_within;    // update at which the estimate first got within bounds
   std::vector<double> final_error;  // metres, per trial

@@ -136,6 +136,54 @@ TEST(AmbiguityByLikelihood, APlaceIsScoredAtItsBestParticle) {
   EXPECT_FALSE(find_ambiguity(p, w, mean_only, score).ambiguous());
 }
 
+// Rivals (AmbiguityOptions::rivals): a place the cloud has lost, given by the caller.
+// One cluster at A (3.2, 2.1); the residual (higher is better, as PlaceScore) has a well
+// at A and one at C (15.2, 6.1), C's worse by c_extra; each well falls off by 1 per
+// 0.1 m. The filter's own score is flat: only the residual tells.
+PlaceScore two_wells(double c_extra) {
+  return [c_extra](const Pose& q) {
+    const double da = std::hypot(q.x - 3.2, q.y - 2.1), dc = std::hypot(q.x - 15.2, q.y - 6.1);
+    return -1.0 - std::min(100 * da * da, 100 * dc * dc + c_extra);
+  };
+}
+const PlaceScore flat = [](const Pose&) { return -0.2; };
+
+TEST(AmbiguityByLikelihood, ARivalAsGoodAsTheCloudsPlaceIsAPlace) {
+  std::vector<Pose> p;
+  std::vector<double> w;
+  add_cluster(p, w, {3.2, 2.1, 0}, 1.0, 50);
+  AmbiguityOptions o;
+  // Given 0.15 m and 0.1 m off its well: refined onto it.
+  const std::vector<Pose> rival{{15.35, 6.0, 0}};
+  const Ambiguity a = find_ambiguity(p, w, o, flat, rival, two_wells(o.rival_margin_z2 / 2));
+  ASSERT_TRUE(a.ambiguous());
+  ASSERT_EQ(a.places.size(), 2u);
+  EXPECT_NEAR(a.places[0].x, 3.2, 0.05);
+  EXPECT_NEAR(a.places[1].x, 15.2, 0.01);
+  EXPECT_NEAR(a.places[1].y, 6.1, 0.01);
+  EXPECT_EQ(a.weights[1], 0.0);  // no particle there
+  // Worse than the cloud's place by twice the margin: not a place.
+  EXPECT_FALSE(find_ambiguity(p, w, o, flat, rival, two_wells(2 * o.rival_margin_z2)).ambiguous());
+  // Without the rival, or with rivals off, or without a residual: one place.
+  EXPECT_FALSE(find_ambiguity(p, w, o, flat, {}, two_wells(0)).ambiguous());
+  EXPECT_FALSE(find_ambiguity(p, w, o, flat, rival).ambiguous());
+  o.rivals = false;
+  EXPECT_FALSE(find_ambiguity(p, w, o, flat, rival, two_wells(0)).ambiguous());
+}
+
+TEST(AmbiguityByLikelihood, ARivalThatRefinesOntoTheCloudsPlaceIsThatPlace) {
+  std::vector<Pose> p;
+  std::vector<double> w;
+  add_cluster(p, w, {3.2, 2.1, 0}, 1.0, 50);
+  // 1.1 m from A, whose well is the only one near: refinement walks it back onto A.
+  const PlaceScore one_well = [](const Pose& q) {
+    const double d = std::hypot(q.x - 3.2, q.y - 2.1);
+    return -1.0 - 0.5 * d * d;
+  };
+  const Ambiguity a = find_ambiguity(p, w, {}, flat, {{4.3, 2.1, 0}}, one_well);
+  EXPECT_FALSE(a.ambiguous());
+}
+
 TEST(AmbiguityByLikelihood, ADiffuseCloudIsAmbiguousWhateverTheScores) {
   // 400 equal particles on a 20 m x 20 m grid (a cloud just after init_global).
   std::vector<Pose> p;

@@ -1,0 +1,68 @@
+// The twin oracle of the localization trials (client/sim/twin_places.h): in a hall of
+// pillars on an 8 m grid, a start whose 15 m of view holds only pillars has a twin one
+// grid step away (the same scans, whatever the turns), and a start that sees two walls
+// of the hall has none.
+#include "client/sim/twin_places.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "client/sim/localization_trials.h"
+#include "common/raycast/sweep_ray_caster.h"
+
+namespace fleetmap::localization {
+namespace {
+
+struct Hall {
+  Map map = load_map_file("gen:hall");  // 60 m x 40 m, pillars at x 6 + 8i, y 4 + 8j
+  std::unique_ptr<RayCaster> world = make_fast_ray_caster(map, RayCasterOptions{});
+  GlobalSearch search{map, [] {
+                        GlobalSearchOptions o;
+                        o.field.margin = 15;
+                        return o;
+                      }()};
+  std::vector<double> beams = evenly_spread_angles(131, kPi);
+
+  // A look around as the trials make it: six turns of 60 degrees in place.
+  static std::vector<Pose> look_around(const Pose& start) {
+    std::vector<Pose> path{start};
+    for (int k = 1; k <= 6; ++k) path.push_back({start.x, start.y, normalize_angle(start.theta + k * deg2rad(60.0))});
+    return path;
+  }
+};
+
+TEST(TwinPlaces, AStartAmongPillarsOnlyHasATwinOneGridStepAway) {
+  const Hall h;
+  // Every wall of the hall is 16 m or more away; the pillars repeat every 8 m.
+  const Pose start{26.3, 16.2, deg2rad(20.0)};
+  const TwinCheck t = find_twin(*h.world, h.search, Hall::look_around(start), h.beams, deg2rad(3.0));
+  ASSERT_TRUE(t.twin);
+  EXPECT_LT(t.mean_z2, 0.1);
+  // The twin is the start moved by a step of the pillars' grid, same heading.
+  const double dx = t.place.x - start.x, dy = t.place.y - start.y;
+  EXPECT_NEAR(dx, 8 * std::round(dx / 8), 0.02);
+  EXPECT_NEAR(dy, 8 * std::round(dy / 8), 0.02);
+  EXPECT_GE(std::hypot(dx, dy), 7.9);
+  EXPECT_LT(std::fabs(angle_diff(t.place.theta, start.theta)), deg2rad(0.2));
+}
+
+TEST(TwinPlaces, AStartThatSeesTheHallsCornerHasNone) {
+  const Hall h;
+  // 3 m from the west wall and 2 m from the south one: a step of the grid moves both.
+  const Pose start{3.0, 2.0, deg2rad(35.0)};
+  const TwinCheck t = find_twin(*h.world, h.search, Hall::look_around(start), h.beams, deg2rad(3.0));
+  EXPECT_FALSE(t.twin);
+  EXPECT_GT(t.tried, 0);
+  EXPECT_GT(t.mean_z2, 0.3);  // the best other place differs by more than half the noise, RMS
+}
+
+TEST(TwinPlaces, NoPathOrNoBeamsHasNoTwin) {
+  const Hall h;
+  EXPECT_FALSE(find_twin(*h.world, h.search, {}, h.beams, deg2rad(3.0)).twin);
+  EXPECT_FALSE(find_twin(*h.world, h.search, {{26.3, 16.2, 0}}, {}, deg2rad(3.0)).twin);
+}
+
+}  // namespace
+}  // namespace fleetmap::localization
