@@ -612,14 +612,26 @@ PlaceScore ParticleFilter::recent_fit() const {
 
 PlaceScore ParticleFilter::recent_residual() const {
   const AmbiguityOptions& o = options_.ambiguity;
-  const double beams = static_cast<double>(std::max<size_t>(1, recent_.size() * beams_.size()));
+  // Returns in front of the map (people, foreground.h) are left out: every place pays the
+  // cap on them alike, and counted they would dilute the difference between places.
+  auto kept = std::make_shared<std::vector<std::vector<uint8_t>>>();
+  double beams = 0;
+  for (const Scan& scan : recent_) {
+    const std::vector<uint8_t> front =
+        scan.foreground.empty() ? foreground_returns(scan.ranges, beams_, options_.laser.rmax, options_.foreground)
+                                : scan.foreground;
+    kept->emplace_back(front.size());
+    for (size_t j = 0; j < front.size(); ++j) beams += kept->back()[j] = !front[j];
+  }
+  beams = std::max(1.0, beams);
   auto synthetic = std::make_shared<std::vector<double>>(beams_.size());
-  return [this, offsets = recent_offsets(), synthetic, beams, &o](const Pose& place) {
+  return [this, offsets = recent_offsets(), synthetic, kept, beams, &o](const Pose& place) {
     double sum = 0;
     for (size_t k = 0; k < recent_.size() && k < offsets.size(); ++k) {
       const Pose p = compose(place, offsets[k]);
       caster_->cast_scan(p.point(), p.theta, beams_, synthetic->data());
       for (size_t j = 0; j < beams_.size(); ++j) {
+        if (!(*kept)[k][j]) continue;
         const double z = (recent_[k].ranges[j] - (*synthetic)[j]) / o.rival_sigma;
         sum += std::min(z * z, o.rival_max_z2);
       }

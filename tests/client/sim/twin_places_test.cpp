@@ -31,13 +31,14 @@ struct Hall {
     for (int k = 1; k <= 6; ++k) path.push_back({start.x, start.y, normalize_angle(start.theta + k * deg2rad(60.0))});
     return path;
   }
+  TwinCheck check(const Pose& start) const { return find_twin(*world, search, look_around(start), beams, deg2rad(3.0)); }
 };
 
 TEST(TwinPlaces, AStartAmongPillarsOnlyHasATwinOneGridStepAway) {
   const Hall h;
   // Every wall of the hall is 16 m or more away; the pillars repeat every 8 m.
   const Pose start{26.3, 16.2, deg2rad(20.0)};
-  const TwinCheck t = find_twin(*h.world, h.search, Hall::look_around(start), h.beams, deg2rad(3.0));
+  const TwinCheck t = h.check(start);
   ASSERT_TRUE(t.twin);
   EXPECT_LT(t.mean_z2, 0.1);
   // The twin is the start moved by a step of the pillars' grid, same heading.
@@ -52,7 +53,7 @@ TEST(TwinPlaces, AStartThatSeesTheHallsCornerHasNone) {
   const Hall h;
   // 3 m from the west wall and 2 m from the south one: a step of the grid moves both.
   const Pose start{3.0, 2.0, deg2rad(35.0)};
-  const TwinCheck t = find_twin(*h.world, h.search, Hall::look_around(start), h.beams, deg2rad(3.0));
+  const TwinCheck t = h.check(start);
   EXPECT_FALSE(t.twin);
   EXPECT_GT(t.tried, 0);
   EXPECT_GT(t.mean_z2, 0.3);  // the best other place differs by more than half the noise, RMS
