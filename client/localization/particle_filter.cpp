@@ -620,8 +620,11 @@ PlaceScore ParticleFilter::recent_residual() const {
     const std::vector<uint8_t> front =
         scan.foreground.empty() ? foreground_returns(scan.ranges, beams_, options_.laser.rmax, options_.foreground)
                                 : scan.foreground;
-    kept->emplace_back(front.size());
-    for (size_t j = 0; j < front.size(); ++j) beams += kept->back()[j] = !front[j];
+    std::vector<uint8_t>& keep = kept->emplace_back(front.size());
+    for (size_t j = 0; j < front.size(); ++j) {
+      keep[j] = !front[j];
+      beams += keep[j];
+    }
   }
   beams = std::max(1.0, beams);
   auto synthetic = std::make_shared<std::vector<double>>(beams_.size());

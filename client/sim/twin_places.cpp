@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "client/localization/place_refinement.h"
+#include "client/localization/stitched_scan.h"
 
 namespace fleetmap::localization {
 
@@ -14,29 +15,24 @@ TwinCheck find_twin(const RayCaster& world, const GlobalSearch& search, const st
   if (path.empty() || n == 0) return out;
   const Pose& start = path.front();
   out.place = start;
-  const double rmax = world.options().rmax;
-  // Each scan's pose in the start's frame, and the truth's noiseless ranges.
-  std::vector<Odometry> relative;
-  std::vector<double> truth(path.size() * n);
-  for (size_t u = 0; u < path.size(); ++u) {
-    relative.push_back(between(start, path[u]));
-    world.cast_scan(path[u].point(), path[u].theta, beam_angles, truth.data() + u * n);
+  // The truth's noiseless scans, stitched newest first so that the frame is the start's
+  // (stitched_scan.h): its poses are each scan's pose from the start.
+  std::vector<std::vector<double>> truth(path.size(), std::vector<double>(n));
+  std::vector<const std::vector<double>*> newest_first;
+  std::vector<Odometry> steps;
+  for (size_t u = path.size(); u-- > 0;) {
+    world.cast_scan(path[u].point(), path[u].theta, beam_angles, truth[u].data());
+    newest_first.push_back(&truth[u]);
+    steps.push_back(u + 1 < path.size() ? between(path[u + 1], path[u]) : Odometry{});
   }
-  // The returns as points seen from the start (stitched_scan.h does this from odometry).
-  std::vector<double> ranges, angles;
+  const StitchedScan stitched = stitch_scans(newest_first, steps, beam_angles, world.options().rmax);
+  if (stitched.ranges.empty()) return out;
+  std::vector<Odometry> relative;  // relative[u]: path[u] from the start
   for (size_t u = 0; u < path.size(); ++u) {
-    const Odometry& q = relative[u];
-    for (size_t j = 0; j < n; ++j) {
-      const double r = truth[u * n + j];
-      if (r >= rmax) continue;
-      const double a = q.dtheta + beam_angles[j];
-      const double x = q.dx + r * std::cos(a), y = q.dy + r * std::sin(a);
-      ranges.push_back(std::hypot(x, y));
-      angles.push_back(std::atan2(y, x));
-    }
+    const Pose& q = stitched.poses[path.size() - 1 - u];
+    relative.push_back({q.x, q.y, q.theta});
   }
-  if (ranges.empty()) return out;
-  const std::vector<Candidate> candidates = search.search(ranges, angles, INFINITY, start.theta, half_width,
+  const std::vector<Candidate> candidates = search.search(stitched.ranges, stitched.angles, INFINITY, start.theta, half_width,
                                                           options.candidates);
   std::vector<double> cast(n);
   auto mean_z2 = [&](const Pose& p) {
@@ -45,7 +41,7 @@ TwinCheck find_twin(const RayCaster& world, const GlobalSearch& search, const st
       const Pose q = compose(p, relative[u]);
       world.cast_scan(q.point(), q.theta, beam_angles, cast.data());
       for (size_t j = 0; j < n; ++j) {
-        const double z = (cast[j] - truth[u * n + j]) / options.sigma;
+        const double z = (cast[j] - truth[u][j]) / options.sigma;
         sum += std::min(z * z, options.max_z2);
       }
     }
