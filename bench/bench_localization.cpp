@@ -80,8 +80,10 @@ void bench_map(const std::string& path, const TrialSettings& base, const std::ve
   const Map map = load_map_file(path);
   std::shared_ptr<const RayCaster> world = std::make_shared<GridRayCaster>(map, base.filter.laser);
   report_map_header(stdout, path, map, base);
+  TrialSettings s = base;  // every preset's trials on this map share their starts' twin checks
+  s.twin_cache = std::make_shared<TwinCache>();
   for (const std::string& c : configs) {
-    if (auto g = report_preset(stdout, map, world, base, c, !skip_global, !skip_tracking))
+    if (auto g = report_preset(stdout, map, world, s, c, !skip_global, !skip_tracking))
       rows.push_back({map_label(path), c, std::move(*g)});
     if (base.kidnaps > 0 || base.false_alarm_drive > 0) {
       TrialSettings k = base;

@@ -149,15 +149,16 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
   const std::shared_ptr<const GlobalSearch> search = make_search(map, s.filter);
   if (search) res.setup_seconds = seconds_since(setup);
   // The twins' own search (the default field), whatever the preset under test uses.
-  std::unique_ptr<const GlobalSearch> twin_search;
-  if (s.twins) {
+  std::shared_ptr<TwinCache> twins = s.twin_cache;
+  if (s.twins && !twins) twins = std::make_shared<TwinCache>();
+  if (twins && !twins->search) {
     GlobalSearchOptions so;
     so.field.margin = world->options().rmax;
     so.field.laser_height = world->options().laser_height;
     so.threads = s.filter.threads;
-    twin_search = std::make_unique<const GlobalSearch>(map, so);
-    res.twins_checked = true;
+    twins->search = std::make_shared<const GlobalSearch>(map, so);
   }
+  res.twins_checked = s.twins;
   double twin_seconds = 0;  // left out of the localizations' time
   const auto t0 = Clock::now();
   for (int t = 0; t < s.trials; ++t) {
@@ -203,9 +204,12 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
     res.success_weight_rule += g.outcome_weight_rule == TrialOutcome::Success;
     res.ambiguous_weight_rule += g.outcome_weight_rule == TrialOutcome::Ambiguous;
     res.wrong_weight_rule += g.outcome_weight_rule == TrialOutcome::Wrong;
-    if (twin_search) {
+    if (s.twins) {
       const auto twin_t0 = Clock::now();
-      const TwinCheck tc = find_twin(*world, *twin_search, run.path, beams, fo.compass_half_width);
+      if (twins->by_trial.size() <= static_cast<size_t>(t)) twins->by_trial.resize(t + 1);
+      std::optional<TwinCheck>& cached = twins->by_trial[t];
+      if (!cached) cached = find_twin(*world, *twins->search, run.path, beams, fo.compass_half_width);
+      const TwinCheck& tc = *cached;
       g.twin = tc.twin ? 1 : 0;
       g.twin_place = tc.place;
       g.twin_mean_z2 = tc.mean_z2;

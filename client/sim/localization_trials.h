@@ -23,12 +23,21 @@
 #include <vector>
 
 #include "client/sim/laser_simulator.h"
+#include "client/sim/twin_places.h"
 #include "client/localization/lost_detector.h"
 #include "client/localization/particle_filter.h"
 #include "common/map/map.h"
 #include "common/raycast/ray_caster.h"
 
 namespace fleetmap::localization {
+
+// The twin checks of one map's trials (TrialSettings::twins): they depend on the start
+// and the path, which every preset's trials share, not on the filter; so a caller that
+// runs several presets on one map with the same settings checks each start once.
+struct TwinCache {
+  std::shared_ptr<const GlobalSearch> search;  // the oracle's own, built at first use
+  std::vector<std::optional<TwinCheck>> by_trial;
+};
 
 struct TrialSettings {
   ParticleFilterOptions filter;  // the configuration under test
@@ -82,6 +91,9 @@ struct TrialSettings {
   // Whether each start has a twin (twin_places.h): a place no scan tells from it, where
   // the right answer is "ambiguous". Each trial's outcome is then scored by its kind of start.
   bool twins = false;
+  // Shared by the presets run on one map (the caller makes one per map); none: each call
+  // to run_global_trials checks its starts itself.
+  std::shared_ptr<TwinCache> twin_cache;
 };
 
 // A global trial's outcome: within bounds and staying so to the last update, with one
