@@ -117,6 +117,11 @@ int main(int argc, char** argv) {
                  "maps (AMRL .vectormap.txt, seed .map, or generated: gen:offices, gen:corridor, gen:hall, "
                  "gen:clutter, with an optional :SEED); default GDC1 and UT_Campus in " + maps_dir());
   app.add_option("--trials", s.trials, "global localization trials per map")->capture_default_str();
+  app.add_option("--first-trial", s.first_trial,
+                 "index of the first trial: each trial's start and draws depend on the seed and its index alone, so "
+                 "--first-trial 114 --trials 1 runs trial 114 again")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   app.add_option("--seed", s.seed, "seed of every random draw")->capture_default_str();
   app.add_option("--particles", s.filter.particles, "NP")->capture_default_str();
   app.add_option("--updates", s.updates, "updates allowed to converge")->capture_default_str();
@@ -179,6 +184,10 @@ int main(int argc, char** argv) {
   app.add_option("--rivals", s.rivals,
                  "1: the ambiguity verdict also scores the last search's best places the cloud lost (ambiguity.h), "
                  "0: only the cloud's, for every preset but seed (default: the preset's)")
+      ->check(CLI::Range(0, 1));
+  app.add_option("--register-scans", s.register_scans,
+                 "1: the rivals are judged with each recent scan registered at the best place (ambiguity.h), 0: on the "
+                 "scans as the odometry stitches them, for every preset but seed (default: the preset's)")
       ->check(CLI::Range(0, 1));
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();

@@ -109,7 +109,7 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
 
 Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<double>& weights,
                          const AmbiguityOptions& o, const PlaceScore& score, const std::vector<Pose>& rivals,
-                         const PlaceScore& residual) {
+                         const PlaceScore& residual, const RegisteredResidual& registered) {
   const PlaceCandidates c = find_candidates(poses, weights, o, o.refine);
   // One candidate: nothing to compare. A diffuse cloud: the candidates are a sample of
   // many comparable lumps, and the best of them says nothing about the rest.
@@ -153,7 +153,17 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
   fine.min_step_theta = deg2rad(0.03);
   fine.max_moves = 80;
   const size_t top = static_cast<size_t>(std::max_element(ll.begin(), ll.end()) - ll.begin());
-  const RefinedPlace reference = refine_place(at[top], residual, fine);
+  RefinedPlace reference = refine_place(at[top], residual, fine);
+  // Registered: the scans' poses corrected at the reference, where the stitching's error
+  // shows; a place alike along the path fits those same poses (a twin shares the path's
+  // geometry), and each rival is refined on them as a whole. A rival that, registered at
+  // itself, fits at least as well as the reference is a place too: the reference may be
+  // the wrong one of the two.
+  PlaceScore judge = residual;
+  if (registered) {
+    judge = registered(reference.pose);
+    reference.score = judge(reference.pose);
+  }
   std::vector<Pose> held = at;
   held.push_back(reference.pose);
   for (const PlaceCandidate& p : c.list) held.push_back(p.mean);
@@ -162,8 +172,13 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
   };
   for (size_t k = 0; k < rivals.size() && k < o.max_rivals; ++k) {
     if (!apart(rivals[k])) continue;
-    const RefinedPlace r = refine_place(rivals[k], residual, fine);
-    if (!apart(r.pose) || !(r.score >= reference.score - o.rival_margin_z2)) continue;
+    RefinedPlace r = refine_place(rivals[k], residual, fine);
+    if (registered) r = refine_place(r.pose, judge, fine);
+    if (!apart(r.pose)) continue;
+    const bool alike = r.score >= reference.score - o.rival_margin_z2;
+    if (!alike && !(registered && r.score >= reference.score - o.rival_register_window_z2 &&
+                    registered(r.pose)(r.pose) >= reference.score))
+      continue;
     held.push_back(r.pose);
     out.places.push_back(r.pose);
     out.weights.push_back(0);

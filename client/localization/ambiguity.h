@@ -60,17 +60,32 @@ struct AmbiguityOptions {
   // The comparison is sharper than the margin above: by the residual, the mean over the
   // recent beams of min((measured - cast) / rival_sigma)^2, rival_max_z2), a rival is a
   // place when its residual exceeds the best candidate's by at most rival_margin_z2 (0.1:
-  // an RMS difference of a third of the laser's noise). The filter's tempered model (the
-  // margin above) scored look-alikes on the campus, 1.4-1.9 m along a facade, within
-  // 0.005 per beam of the truth; by the residual they are 0.24-1.9 apart.
+  // an RMS difference of a third of the laser's noise, the twin oracle's line,
+  // client/sim/twin_places.h). The filter's tempered model (the margin above) scored
+  // look-alikes on the campus, 1.4-1.9 m along a facade, within 0.005 per beam of the
+  // truth; by the residual they are 0.24-1.9 apart.
+  //
+  // register_scans: the recent scans are placed from the latest by the stitched odometry,
+  // whose error raised the truth's residual from 0.4-0.8 (at the true poses) to 1.2-2.0 on
+  // the campus, far more than the margin, and let places that are not twins come within
+  // it. Each scan is registered at the best candidate (its best pose within
+  // register_max_xy and register_max_theta of the stitched one), and the rivals are
+  // refined and judged as a whole on those poses. A rival within rival_register_window_z2
+  // that, registered at itself, fits at least as well as the best candidate is a place
+  // too: then the best candidate may be the wrong one of the two.
   bool rivals = true;
   size_t max_rivals = 7;
   double rival_sigma = 0.05;   // metres: the laser's noise, sigma_L (seed 000 section 4.1)
   double rival_max_z2 = 9;
-  double rival_margin_z2 = 0.05;
+  double rival_margin_z2 = 0.1;
   // The filter keeps as rivals the search's places within this of its best, per beam of
   // its rerank (unrefined, on the search's grid: loose).
   double rival_search_margin_per_beam = 0.2;
+  bool register_scans = true;
+  double rival_register_window_z2 = 1.0;
+  double register_max_xy = 0.3, register_max_theta = deg2rad(3.0);
+  double register_step_xy = 0.05, register_step_theta = deg2rad(0.5);
+  int register_moves = 40;
 };
 
 struct Ambiguity {
@@ -86,6 +101,9 @@ struct Ambiguity {
 // The mean log-likelihood per beam of the recent scans seen from a pose (the latest
 // scan's pose; ParticleFilter::ambiguity builds it from its scans and sensor model).
 using PlaceScore = std::function<double(const Pose&)>;
+// Given a place, the residual's score with the recent scans registered there
+// (ParticleFilter::registered_residual).
+using RegisteredResidual = std::function<PlaceScore(const Pose&)>;
 
 // Weights need not be normalized; empty or all-zero sets give no place. The Weight rule
 // (options.rule is not read).
@@ -97,6 +115,7 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
 // more than min_separation from the others is a place with no weight.
 Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<double>& weights,
                          const AmbiguityOptions& options, const PlaceScore& score,
-                         const std::vector<Pose>& rivals = {}, const PlaceScore& residual = {});
+                         const std::vector<Pose>& rivals = {}, const PlaceScore& residual = {},
+                         const RegisteredResidual& registered = {});
 
 }  // namespace fleetmap::localization

@@ -610,43 +610,99 @@ PlaceScore ParticleFilter::recent_fit() const {
   };
 }
 
-PlaceScore ParticleFilter::recent_residual() const {
+// The recent scans' residual (AmbiguityOptions::rivals), shared by the scores made from
+// it: the beams kept, a buffer of cast rays.
+struct ParticleFilter::ResidualScans {
+  const RayCaster* caster = nullptr;
+  const std::vector<double>* beams = nullptr;
+  std::vector<const std::vector<double>*> ranges;
+  std::vector<std::vector<uint8_t>> kept;
+  double kept_beams = 0;
+  double sigma = 0, cap = 0;
+  std::vector<double> synthetic;
+
+  // Scan k's summed residual from a pose.
+  double scan(size_t k, const Pose& p) {
+    caster->cast_scan(p.point(), p.theta, *beams, synthetic.data());
+    double sum = 0;
+    for (size_t j = 0; j < beams->size(); ++j) {
+      if (!kept[k][j]) continue;
+      const double z = ((*ranges[k])[j] - synthetic[j]) / sigma;
+      sum += std::min(z * z, cap);
+    }
+    return sum;
+  }
+  // The negated mean residual, each scan at the place composed with its offset.
+  double place(const Pose& at, const std::vector<Odometry>& offsets) {
+    double sum = 0;
+    for (size_t k = 0; k < ranges.size() && k < offsets.size(); ++k) sum += scan(k, compose(at, offsets[k]));
+    return -sum / kept_beams;
+  }
+};
+
+std::shared_ptr<ParticleFilter::ResidualScans> ParticleFilter::residual_scans() const {
   const AmbiguityOptions& o = options_.ambiguity;
+  auto r = std::make_shared<ResidualScans>();
+  r->caster = caster_.get();
+  r->beams = &beams_;
+  r->sigma = o.rival_sigma;
+  r->cap = o.rival_max_z2;
+  r->synthetic.resize(beams_.size());
   // Returns in front of the map (people, foreground.h) are left out: every place pays the
   // cap on them alike, and counted they would dilute the difference between places.
-  auto kept = std::make_shared<std::vector<std::vector<uint8_t>>>();
-  double beams = 0;
   for (const Scan& scan : recent_) {
     const std::vector<uint8_t> front =
         scan.foreground.empty() ? foreground_returns(scan.ranges, beams_, options_.laser.rmax, options_.foreground)
                                 : scan.foreground;
-    std::vector<uint8_t>& keep = kept->emplace_back(front.size());
+    r->ranges.push_back(&scan.ranges);
+    std::vector<uint8_t>& keep = r->kept.emplace_back(front.size());
     for (size_t j = 0; j < front.size(); ++j) {
       keep[j] = !front[j];
-      beams += keep[j];
+      r->kept_beams += keep[j];
     }
   }
-  beams = std::max(1.0, beams);
-  auto synthetic = std::make_shared<std::vector<double>>(beams_.size());
-  return [this, offsets = recent_offsets(), synthetic, kept, beams, &o](const Pose& place) {
-    double sum = 0;
-    for (size_t k = 0; k < recent_.size() && k < offsets.size(); ++k) {
-      const Pose p = compose(place, offsets[k]);
-      caster_->cast_scan(p.point(), p.theta, beams_, synthetic->data());
-      for (size_t j = 0; j < beams_.size(); ++j) {
-        if (!(*kept)[k][j]) continue;
-        const double z = (recent_[k].ranges[j] - (*synthetic)[j]) / o.rival_sigma;
-        sum += std::min(z * z, o.rival_max_z2);
-      }
+  r->kept_beams = std::max(1.0, r->kept_beams);
+  return r;
+}
+
+PlaceScore ParticleFilter::recent_residual() const {
+  auto r = residual_scans();
+  return [r, offsets = recent_offsets()](const Pose& place) { return r->place(place, offsets); };
+}
+
+RegisteredResidual ParticleFilter::registered_residual() const {
+  const AmbiguityOptions& o = options_.ambiguity;
+  auto r = residual_scans();
+  return [r, stitched = recent_offsets(), &o](const Pose& place) {
+    // Each scan at its own best pose near where the stitching puts it, within the
+    // window: the stitching's error (odometry's translation, a registered turn) costs
+    // the right place more than the margin between places.
+    RefineOptions window;
+    window.step_xy = o.register_step_xy;
+    window.step_theta = o.register_step_theta;
+    window.min_step_xy = 0.003;
+    window.min_step_theta = deg2rad(0.03);
+    window.max_moves = o.register_moves;
+    std::vector<Odometry> offsets;
+    for (size_t k = 0; k < r->ranges.size() && k < stitched.size(); ++k) {
+      const Pose at = compose(place, stitched[k]);
+      const auto bounded = [&](const Pose& p) {
+        if (distance(p, at) > o.register_max_xy || std::fabs(angle_diff(p.theta, at.theta)) > o.register_max_theta)
+          return -std::numeric_limits<double>::infinity();
+        return -r->scan(k, p);
+      };
+      offsets.push_back(between(place, refine_place(at, bounded, window).pose));
     }
-    return -sum / beams;
+    return PlaceScore([r, offsets = std::move(offsets)](const Pose& q) { return r->place(q, offsets); });
   };
 }
 
 Ambiguity ParticleFilter::ambiguity(AmbiguityRule rule) const {
   if (rule == AmbiguityRule::Weight || recent_.empty()) return find_ambiguity(poses_, weights_, options_.ambiguity);
+  const bool rivals = !rivals_.empty();
   return find_ambiguity(poses_, weights_, options_.ambiguity, recent_fit(), rivals_,
-                        rivals_.empty() ? PlaceScore{} : recent_residual());
+                        rivals ? recent_residual() : PlaceScore{},
+                        rivals && options_.ambiguity.register_scans ? registered_residual() : RegisteredResidual{});
 }
 
 PoseEstimate ParticleFilter::estimate() const {

@@ -256,6 +256,10 @@ class ParticleFilter {
   // the mean over their beams of min(((measured - cast) / rival_sigma)^2, rival_max_z2).
   // Valid and thread-safe as recent_fit().
   PlaceScore recent_residual() const;
+  // The same with each recent scan registered at a place (AmbiguityOptions::register_scans):
+  // at its best pose within the window around where the stitching puts it. The score it
+  // returns keeps those poses relative to the place. Valid as recent_fit().
+  RegisteredResidual registered_residual() const;
 
  private:
   // The largest phi <= most that keeps tempering_ess of the particles effective.
@@ -271,6 +275,9 @@ class ParticleFilter {
   const GlobalSearch& global_search();
   // Each recent scan's pose relative to the latest, and the score above with them.
   std::vector<Odometry> recent_offsets() const;
+  // The recent scans and their kept beams, for recent_residual() and registered_residual().
+  struct ResidualScans;
+  std::shared_ptr<ResidualScans> residual_scans() const;
   double recent_log_likelihood(const Pose& place, const std::vector<Odometry>& offsets,
                                std::vector<double>& synthetic) const;
   // Settling (ParticleFilterOptions::settle_after): the cloud from every recent scan at once.

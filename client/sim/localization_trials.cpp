@@ -161,7 +161,7 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
   res.twins_checked = s.twins;
   double twin_seconds = 0;  // left out of the localizations' time
   const auto t0 = Clock::now();
-  for (int t = 0; t < s.trials; ++t) {
+  for (int t = s.first_trial; t < s.first_trial + s.trials; ++t) {
     const auto trial_t0 = Clock::now();
     std::mt19937_64 rng(s.seed * 1000003 + t);
     const Pose start = pick_start_pose(free_space, *world, beams, s.min_hit_fraction, 0.5, rng);
@@ -480,6 +480,7 @@ ParticleFilterOptions trial_filter(const TrialSettings& base, const std::string&
   if (base.search_drops_foreground >= 0) f.search_drops_foreground = base.search_drops_foreground > 0;
   if (base.foreground_width > 0) f.foreground.max_width = base.foreground_width;
   if (base.rivals >= 0) f.ambiguity.rivals = base.rivals > 0;
+  if (base.register_scans >= 0) f.ambiguity.register_scans = base.register_scans > 0;
   return f;
 }
 

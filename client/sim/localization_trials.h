@@ -43,6 +43,7 @@ struct TrialSettings {
   ParticleFilterOptions filter;  // the configuration under test
   LaserSimulatorOptions laser;
   int trials = 100;
+  int first_trial = 0;  // index of the first (each trial's draws depend on its index alone)
   int updates = 10;
   double global_step = 0.5;  // metres between scans during global localization
   // Global localization starts with a look around, as SimRobot's does: the first
@@ -84,6 +85,8 @@ struct TrialSettings {
   double foreground_width = -1;
   // AmbiguityOptions::rivals: 1 on, 0 off, negative: the preset's.
   int rivals = -1;
+  // AmbiguityOptions::register_scans: 1 on, 0 off, negative: the preset's.
+  int register_scans = -1;
   // After each global trial whose estimate ends out of bounds: whom the scans favour, the
   // truth or the estimate (GlobalTrial::truth_fit), to tell the model's failures (no
   // filter on it could pick the truth) from the filter's (it lost a better place).

@@ -171,6 +171,49 @@ TEST(AmbiguityByLikelihood, ARivalAsGoodAsTheCloudsPlaceIsAPlace) {
   EXPECT_FALSE(find_ambiguity(p, w, o, flat, rival, two_wells(0)).ambiguous());
 }
 
+// Given, the registered residual (each scan at its own best pose near the stitched one)
+// judges the refined places instead of the residual they were refined on.
+TEST(AmbiguityByLikelihood, RivalsAreJudgedByTheRegisteredResidualWhenGiven) {
+  std::vector<Pose> p;
+  std::vector<double> w;
+  add_cluster(p, w, {3.2, 2.1, 0}, 1.0, 50);
+  const AmbiguityOptions o;
+  const std::vector<Pose> rival{{15.35, 6.0, 0}};
+  const auto registered = [](double c_extra) {
+    return RegisteredResidual([c_extra](const Pose&) { return two_wells(c_extra); });
+  };
+  // The residual says alike, registered C is worse by twice the margin.
+  EXPECT_FALSE(find_ambiguity(p, w, o, flat, rival, two_wells(0), registered(2 * o.rival_margin_z2)).ambiguous());
+  // And the other way round.
+  const Ambiguity a = find_ambiguity(p, w, o, flat, rival, two_wells(2 * o.rival_margin_z2), registered(0));
+  ASSERT_TRUE(a.ambiguous());
+  EXPECT_NEAR(a.places[1].x, 15.2, 0.01);
+}
+
+// Registered at the best candidate A, rival C is worse by twice the margin; registered
+// at C itself, C fits better than A did: the best candidate may be the wrong one of
+// the two, so both are places. If C registered at itself still fits worse, it is not.
+TEST(AmbiguityByLikelihood, ARivalThatFitsBetterRegisteredAtItselfIsAPlace) {
+  std::vector<Pose> p;
+  std::vector<double> w;
+  add_cluster(p, w, {3.2, 2.1, 0}, 1.0, 50);
+  const AmbiguityOptions o;
+  const std::vector<Pose> rival{{15.35, 6.0, 0}};
+  const auto registered = [&](double c_extra_at_c) {
+    return RegisteredResidual([&o, c_extra_at_c](const Pose& at) {
+      return std::hypot(at.x - 15.2, at.y - 6.1) < 0.5 ? two_wells(c_extra_at_c) : two_wells(2 * o.rival_margin_z2);
+    });
+  };
+  const Ambiguity a = find_ambiguity(p, w, o, flat, rival, two_wells(0), registered(-0.01));
+  ASSERT_TRUE(a.ambiguous());
+  EXPECT_NEAR(a.places[1].x, 15.2, 0.01);
+  EXPECT_FALSE(find_ambiguity(p, w, o, flat, rival, two_wells(0), registered(0.01)).ambiguous());
+  // Beyond the window registering at C is not tried.
+  AmbiguityOptions narrow = o;
+  narrow.rival_register_window_z2 = o.rival_margin_z2;
+  EXPECT_FALSE(find_ambiguity(p, w, narrow, flat, rival, two_wells(0), registered(-0.01)).ambiguous());
+}
+
 TEST(AmbiguityByLikelihood, ARivalThatRefinesOntoTheCloudsPlaceIsThatPlace) {
   std::vector<Pose> p;
   std::vector<double> w;
