@@ -86,6 +86,7 @@ struct AmbiguityOptions {
   double register_max_xy = 0.3, register_max_theta = deg2rad(3.0);
   double register_step_xy = 0.05, register_step_theta = deg2rad(0.5);
   int register_moves = 40;
+  int threads = 1;  // refining the rivals (the filter passes its own); the scores must allow it
 };
 
 struct Ambiguity {

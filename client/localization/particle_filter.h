@@ -254,11 +254,11 @@ class ParticleFilter {
   PlaceScore recent_fit() const;
   // The negated residual of the recent scans seen from `place` (AmbiguityOptions::rivals):
   // the mean over their beams of min(((measured - cast) / rival_sigma)^2, rival_max_z2).
-  // Valid and thread-safe as recent_fit().
+  // Valid as recent_fit(), and callable from several threads at once.
   PlaceScore recent_residual() const;
   // The same with each recent scan registered at a place (AmbiguityOptions::register_scans):
   // at its best pose within the window around where the stitching puts it. The score it
-  // returns keeps those poses relative to the place. Valid as recent_fit().
+  // returns keeps those poses relative to the place. Valid and callable as recent_residual().
   RegisteredResidual registered_residual() const;
 
  private:

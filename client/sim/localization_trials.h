@@ -133,6 +133,8 @@ struct GlobalTrial {
   int twin = -1;
   Pose twin_place;
   double twin_mean_z2 = NAN;
+  // The twin is one of the verdict's places, which the oracle's own search missed.
+  bool twin_named_by_verdict = false;
 };
 
 // Whom the scans favour in an explained trial: the estimate by more than `tie` per beam
@@ -158,6 +160,7 @@ struct GlobalResult {
   // success on a start without one and ambiguous on one with one (right()).
   bool twins_checked = false;
   int twin_starts = 0, twin_success = 0, twin_ambiguous = 0, twin_wrong = 0;
+  int twins_named_by_verdict = 0;  // GlobalTrial::twin_named_by_verdict (each one ambiguous)
   int right() const { return success - twin_success + twin_ambiguous; }
   std::vector<GlobalTrial> per_trial;
   std::vector<int> first_within;    // update at which the estimate first got within bounds

@@ -9,7 +9,8 @@
 namespace fleetmap::localization {
 
 TwinCheck find_twin(const RayCaster& world, const GlobalSearch& search, const std::vector<Pose>& path,
-                    const std::vector<double>& beam_angles, double half_width, const TwinOptions& options) {
+                    const std::vector<double>& beam_angles, double half_width, const TwinOptions& options,
+                    const std::vector<Pose>& also) {
   TwinCheck out;
   const size_t n = beam_angles.size();
   if (path.empty() || n == 0) return out;
@@ -32,8 +33,12 @@ TwinCheck find_twin(const RayCaster& world, const GlobalSearch& search, const st
     const Pose& q = stitched.poses[path.size() - 1 - u];
     relative.push_back({q.x, q.y, q.theta});
   }
-  const std::vector<Candidate> candidates = search.search(stitched.ranges, stitched.angles, INFINITY, start.theta, half_width,
-                                                          options.candidates);
+  std::vector<Pose> candidates;
+  if (options.candidates > 0)
+    for (const Candidate& c : search.search(stitched.ranges, stitched.angles, INFINITY, start.theta, half_width,
+                                            options.candidates))
+      candidates.push_back(c.pose);
+  candidates.insert(candidates.end(), also.begin(), also.end());
   std::vector<double> cast(n);
   auto mean_z2 = [&](const Pose& p) {
     double sum = 0;
@@ -53,10 +58,10 @@ TwinCheck find_twin(const RayCaster& world, const GlobalSearch& search, const st
   refine.min_step_xy = 0.003;
   refine.min_step_theta = deg2rad(0.03);
   refine.max_moves = 80;
-  for (const Candidate& c : candidates) {
-    if (distance(c.pose, start) < options.min_distance) continue;
+  for (const Pose& c : candidates) {
+    if (distance(c, start) < options.min_distance) continue;
     ++out.tried;
-    const RefinedPlace r = refine_place(c.pose, [&](const Pose& p) { return -mean_z2(p); }, refine);
+    const RefinedPlace r = refine_place(c, [&](const Pose& p) { return -mean_z2(p); }, refine);
     // Refined back onto the start, or turned out of the compass's interval: not another place.
     if (distance(r.pose, start) < options.min_distance) continue;
     if (std::fabs(angle_diff(r.pose.theta, start.theta)) > half_width) continue;

@@ -12,7 +12,9 @@
 // noiseless scans stitched in the start's frame: a twin scores on the likelihood field
 // as the truth does, so it is among the first. Each candidate is refined
 // (place_refinement.h) on cast rays and compared beam by beam; only a refined place still
-// min_distance from the start counts.
+// min_distance from the start counts. The caller may name more candidates (`also`: the
+// places a filter's verdict held, carried back to the start): the search's list is a
+// heuristic, and a twin it misses is a twin all the same.
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -24,7 +26,7 @@
 namespace fleetmap::localization {
 
 struct TwinOptions {
-  size_t candidates = 30;      // the search's best places tried
+  size_t candidates = 30;      // the search's best places tried (0: only `also`)
   double min_distance = 1.0;   // metres from the start: another place, not the start refined
   double sigma = 0.05;         // metres: the laser's noise (seed 000 section 4.1)
   double max_z2 = 9;           // a beam's term: min((difference / sigma)^2, max_z2)
@@ -45,7 +47,9 @@ struct TwinCheck {
 // path: the truth's pose at each scan of the trial, path[0] the start; beam_angles and
 // world's rmax as the laser's. half_width: the compass's interval either side of the
 // start's heading.
+// also: more candidate starts, tried after the search's.
 TwinCheck find_twin(const RayCaster& world, const GlobalSearch& search, const std::vector<Pose>& path,
-                    const std::vector<double>& beam_angles, double half_width, const TwinOptions& options = {});
+                    const std::vector<double>& beam_angles, double half_width, const TwinOptions& options = {},
+                    const std::vector<Pose>& also = {});
 
 }  // namespace fleetmap::localization

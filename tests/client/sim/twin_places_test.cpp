@@ -59,6 +59,27 @@ TEST(TwinPlaces, AStartThatSeesTheHallsCornerHasNone) {
   EXPECT_GT(t.mean_z2, 0.3);  // the best other place differs by more than half the noise, RMS
 }
 
+// Places named by the caller (a verdict's) are checked alone when the search is off:
+// one grid step away, 0.1 m and 0.5 degrees off, is refined onto the twin; half a step
+// away is not a twin.
+TEST(TwinPlaces, APlaceTheCallerNamesIsCheckedLikeTheSearchs) {
+  const Hall h;
+  const Pose start{26.3, 16.2, deg2rad(20.0)};
+  TwinOptions only;
+  only.candidates = 0;
+  const auto path = Hall::look_around(start);
+  const TwinCheck named = find_twin(*h.world, h.search, path, h.beams, deg2rad(3.0), only,
+                                    {{start.x + 8.1, start.y - 0.05, start.theta + deg2rad(0.5)}});
+  ASSERT_TRUE(named.twin);
+  EXPECT_EQ(named.tried, 1);
+  EXPECT_NEAR(named.place.x, start.x + 8, 0.02);
+  EXPECT_NEAR(named.place.y, start.y, 0.02);
+  const TwinCheck half = find_twin(*h.world, h.search, path, h.beams, deg2rad(3.0), only, {{start.x + 4, start.y, start.theta}});
+  EXPECT_FALSE(half.twin);
+  EXPECT_EQ(half.tried, 1);
+  EXPECT_FALSE(find_twin(*h.world, h.search, path, h.beams, deg2rad(3.0), only).twin);  // nothing to try
+}
+
 TEST(TwinPlaces, NoPathOrNoBeamsHasNoTwin) {
   const Hall h;
   EXPECT_FALSE(find_twin(*h.world, h.search, {}, h.beams, deg2rad(3.0)).twin);
