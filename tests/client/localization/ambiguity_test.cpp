@@ -147,14 +147,18 @@ PlaceScore two_wells(double c_extra) {
   };
 }
 const PlaceScore flat = [](const Pose&) { return -0.2; };
-
-TEST(AmbiguityByLikelihood, ARivalAsGoodAsTheCloudsPlaceIsAPlace) {
+// The cloud: one cluster at A. The rival: given 0.15 m and 0.1 m off C's well.
+struct OneClusterAndARival {
   std::vector<Pose> p;
   std::vector<double> w;
-  add_cluster(p, w, {3.2, 2.1, 0}, 1.0, 50);
+  std::vector<Pose> rival{{15.35, 6.0, 0}};
+  OneClusterAndARival() { add_cluster(p, w, {3.2, 2.1, 0}, 1.0, 50); }
+};
+
+TEST(AmbiguityByLikelihood, ARivalAsGoodAsTheCloudsPlaceIsAPlace) {
+  const auto [p, w, rival] = OneClusterAndARival();
   AmbiguityOptions o;
-  // Given 0.15 m and 0.1 m off its well: refined onto it.
-  const std::vector<Pose> rival{{15.35, 6.0, 0}};
+  // Refined onto its well.
   const Ambiguity a = find_ambiguity(p, w, o, flat, rival, two_wells(o.rival_margin_z2 / 2));
   ASSERT_TRUE(a.ambiguous());
   ASSERT_EQ(a.places.size(), 2u);
@@ -174,11 +178,8 @@ TEST(AmbiguityByLikelihood, ARivalAsGoodAsTheCloudsPlaceIsAPlace) {
 // Given, the registered residual (each scan at its own best pose near the stitched one)
 // judges the refined places instead of the residual they were refined on.
 TEST(AmbiguityByLikelihood, RivalsAreJudgedByTheRegisteredResidualWhenGiven) {
-  std::vector<Pose> p;
-  std::vector<double> w;
-  add_cluster(p, w, {3.2, 2.1, 0}, 1.0, 50);
+  const auto [p, w, rival] = OneClusterAndARival();
   const AmbiguityOptions o;
-  const std::vector<Pose> rival{{15.35, 6.0, 0}};
   const auto registered = [](double c_extra) {
     return RegisteredResidual([c_extra](const Pose&) { return two_wells(c_extra); });
   };
@@ -194,11 +195,8 @@ TEST(AmbiguityByLikelihood, RivalsAreJudgedByTheRegisteredResidualWhenGiven) {
 // at C itself, C fits better than A did: the best candidate may be the wrong one of
 // the two, so both are places. If C registered at itself still fits worse, it is not.
 TEST(AmbiguityByLikelihood, ARivalThatFitsBetterRegisteredAtItselfIsAPlace) {
-  std::vector<Pose> p;
-  std::vector<double> w;
-  add_cluster(p, w, {3.2, 2.1, 0}, 1.0, 50);
+  const auto [p, w, rival] = OneClusterAndARival();
   const AmbiguityOptions o;
-  const std::vector<Pose> rival{{15.35, 6.0, 0}};
   const auto registered = [&](double c_extra_at_c) {
     return RegisteredResidual([&o, c_extra_at_c](const Pose& at) {
       return std::hypot(at.x - 15.2, at.y - 6.1) < 0.5 ? two_wells(c_extra_at_c) : two_wells(2 * o.rival_margin_z2);
