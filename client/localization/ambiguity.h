@@ -113,7 +113,10 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
 // The Likelihood rule with the given score (options.rule is not read). rivals: places
 // outside the cloud (AmbiguityOptions::rivals), compared with the best candidate by
 // residual (the negated residual of a pose, higher is better); a rival within the margin
-// more than min_separation from the others is a place with no weight.
+// more than min_separation from the others is a place with no weight. registered, when
+// given (AmbiguityOptions::register_scans): the residual with the scans registered at a
+// place; the rivals are then refined and judged on the scans registered at the best
+// candidate (refined on `residual`).
 Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<double>& weights,
                          const AmbiguityOptions& options, const PlaceScore& score,
                          const std::vector<Pose>& rivals = {}, const PlaceScore& residual = {},
