@@ -116,11 +116,13 @@ int main(int argc, char** argv) {
   app.add_option("--map", maps,
                  "maps (AMRL .vectormap.txt, seed .map, or generated: gen:offices, gen:corridor, gen:hall, "
                  "gen:clutter, with an optional :SEED); default GDC1 and UT_Campus in " + maps_dir());
-  app.add_option("--trials", s.trials, "global localization trials per map")->capture_default_str();
+  app.add_option("--trials", s.trials, "global localization trials per map")
+      ->check(CLI::Range(0, 1000000000))
+      ->capture_default_str();
   app.add_option("--first-trial", s.first_trial,
                  "index of the first trial: each trial's start and draws depend on the seed and its index alone, so "
                  "--first-trial 114 --trials 1 runs trial 114 again")
-      ->check(CLI::NonNegativeNumber)
+      ->check(CLI::Range(0, 1000000000))
       ->capture_default_str();
   app.add_option("--seed", s.seed, "seed of every random draw")->capture_default_str();
   app.add_option("--particles", s.filter.particles, "NP")->capture_default_str();

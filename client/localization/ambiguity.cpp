@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <unordered_map>
 
 #include "client/localization/parallel.h"
@@ -175,21 +176,20 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
   // Each rival refined (and, near enough, registered at itself) on o.threads threads:
   // this is most of the verdict's time. Then taken in order, as places apart.
   const size_t n = std::min(rivals.size(), o.max_rivals);
-  std::vector<RefinedPlace> refined(n);
+  std::vector<std::optional<RefinedPlace>> refined(n);  // none: not apart from the places held
   std::vector<double> self(n, -std::numeric_limits<double>::infinity());
   parallel_for(std::max(1, o.threads), n, [&](int, size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
       if (!apart(rivals[k])) continue;
-      RefinedPlace& r = refined[k];
-      r = refine_place(rivals[k], judge, fine);
+      const RefinedPlace& r = refined[k].emplace(refine_place(rivals[k], judge, fine));
       if (registered && r.score < reference.score - o.rival_margin_z2 &&
           r.score >= reference.score - o.rival_register_window_z2)
         self[k] = registered(r.pose)(r.pose);
     }
   });
   for (size_t k = 0; k < n; ++k) {
-    const RefinedPlace& r = refined[k];
-    if (r.evaluations == 0 || !apart(rivals[k]) || !apart(r.pose)) continue;
+    if (!refined[k] || !apart(rivals[k]) || !apart(refined[k]->pose)) continue;
+    const RefinedPlace& r = *refined[k];
     if (!(r.score >= reference.score - o.rival_margin_z2) && !(self[k] >= reference.score)) continue;
     held.push_back(r.pose);
     out.places.push_back(r.pose);

@@ -616,6 +616,7 @@ struct ParticleFilter::ResidualScans {
   const RayCaster* caster = nullptr;
   const std::vector<double>* beams = nullptr;
   std::vector<const std::vector<double>*> ranges;
+  std::vector<Odometry> stitched;  // each scan's pose from the latest (recent_offsets())
   std::vector<std::vector<uint8_t>> kept;
   double kept_beams = 0;
   double sigma = 0, cap = 0;
@@ -640,9 +641,10 @@ struct ParticleFilter::ResidualScans {
   }
 };
 
-std::shared_ptr<ParticleFilter::ResidualScans> ParticleFilter::residual_scans() const {
+std::shared_ptr<const ParticleFilter::ResidualScans> ParticleFilter::residual_scans() const {
   const AmbiguityOptions& o = options_.ambiguity;
   auto r = std::make_shared<ResidualScans>();
+  r->stitched = recent_offsets();
   r->caster = caster_.get();
   r->beams = &beams_;
   r->sigma = o.rival_sigma;
@@ -665,15 +667,18 @@ std::shared_ptr<ParticleFilter::ResidualScans> ParticleFilter::residual_scans() 
   return r;
 }
 
-PlaceScore ParticleFilter::recent_residual() const {
-  auto r = residual_scans();
-  return [r, offsets = recent_offsets()](const Pose& place) { return r->place(place, offsets); };
+PlaceScore ParticleFilter::recent_residual() const { return stitched_residual(residual_scans()); }
+
+RegisteredResidual ParticleFilter::registered_residual() const { return registered_residual(residual_scans()); }
+
+PlaceScore ParticleFilter::stitched_residual(std::shared_ptr<const ResidualScans> r) {
+  return [r](const Pose& place) { return r->place(place, r->stitched); };
 }
 
-RegisteredResidual ParticleFilter::registered_residual() const {
+RegisteredResidual ParticleFilter::registered_residual(std::shared_ptr<const ResidualScans> r) const {
   const AmbiguityOptions& o = options_.ambiguity;
-  auto r = residual_scans();
-  return [this, r, stitched = recent_offsets(), &o](const Pose& place) {
+  return [this, r, &o](const Pose& place) {
+    const std::vector<Odometry>& stitched = r->stitched;
     // Each scan at its own best pose near where the stitching puts it, within the
     // window: the stitching's error (odometry's translation, a registered turn) costs
     // the right place more than the margin between places.
@@ -714,12 +719,12 @@ RegisteredResidual ParticleFilter::registered_residual() const {
 
 Ambiguity ParticleFilter::ambiguity(AmbiguityRule rule) const {
   if (rule == AmbiguityRule::Weight || recent_.empty()) return find_ambiguity(poses_, weights_, options_.ambiguity);
-  const bool rivals = !rivals_.empty();
+  if (rivals_.empty()) return find_ambiguity(poses_, weights_, options_.ambiguity, recent_fit());
   AmbiguityOptions o = options_.ambiguity;
   o.threads = options_.threads;  // the residuals cast from any thread
-  return find_ambiguity(poses_, weights_, o, recent_fit(), rivals_,
-                        rivals ? recent_residual() : PlaceScore{},
-                        rivals && options_.ambiguity.register_scans ? registered_residual() : RegisteredResidual{});
+  const auto scans = residual_scans();  // one stitching and one foreground pass for both scores
+  return find_ambiguity(poses_, weights_, o, recent_fit(), rivals_, stitched_residual(scans),
+                        o.register_scans ? registered_residual(scans) : RegisteredResidual{});
 }
 
 PoseEstimate ParticleFilter::estimate() const {

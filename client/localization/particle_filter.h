@@ -277,7 +277,9 @@ class ParticleFilter {
   std::vector<Odometry> recent_offsets() const;
   // The recent scans and their kept beams, for recent_residual() and registered_residual().
   struct ResidualScans;
-  std::shared_ptr<ResidualScans> residual_scans() const;
+  std::shared_ptr<const ResidualScans> residual_scans() const;
+  static PlaceScore stitched_residual(std::shared_ptr<const ResidualScans> scans);
+  RegisteredResidual registered_residual(std::shared_ptr<const ResidualScans> scans) const;
   double recent_log_likelihood(const Pose& place, const std::vector<Odometry>& offsets,
                                std::vector<double>& synthetic) const;
   // Settling (ParticleFilterOptions::settle_after): the cloud from every recent scan at once.

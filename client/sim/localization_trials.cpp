@@ -208,10 +208,10 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
     res.wrong_weight_rule += g.outcome_weight_rule == TrialOutcome::Wrong;
     if (s.twins) {
       const auto twin_t0 = Clock::now();
-      if (twins->by_trial.size() <= static_cast<size_t>(t)) twins->by_trial.resize(t + 1);
-      std::optional<TwinCheck>& cached = twins->by_trial[t];
-      if (!cached) cached = find_twin(*world, *twins->search, run.path, beams, fo.compass_half_width);
-      TwinCheck tc = *cached;
+      auto cached = twins->by_trial.find(t);
+      if (cached == twins->by_trial.end())
+        cached = twins->by_trial.emplace(t, find_twin(*world, *twins->search, run.path, beams, fo.compass_half_width)).first;
+      TwinCheck tc = cached->second;
       // The verdict's places, carried back to the start: a twin the oracle's search missed
       // is a twin all the same (the same noiseless comparison; not cached, as it depends
       // on the filter under test).

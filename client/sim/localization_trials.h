@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,7 +37,7 @@ namespace fleetmap::localization {
 // runs several presets on one map with the same settings checks each start once.
 struct TwinCache {
   std::shared_ptr<const GlobalSearch> search;  // the oracle's own, built at first use
-  std::vector<std::optional<TwinCheck>> by_trial;
+  std::map<int, TwinCheck> by_trial;  // sparse: --first-trial may start anywhere
 };
 
 struct TrialSettings {

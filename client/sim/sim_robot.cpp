@@ -61,6 +61,7 @@ std::optional<int> SimRobot::localize(int max_updates) {
     filter_->update(laser_.scan(drive_.pose()), compass());
     if (filter_->awaiting_search()) continue;  // no estimate before the look around's search
     const loc::PoseEstimate e = filter_->estimate();
+    if (!e.converged) continue;  // nothing to report yet; the verdict below costs refinements
     // Look-alike places (identical rooms, a row of identical doors): say so and keep
     // localizing rather than report one of them as the pose.
     const loc::Ambiguity a = filter_->ambiguity();
@@ -73,14 +74,11 @@ std::optional<int> SimRobot::localize(int max_updates) {
       was_ambiguous = true;
       continue;
     }
-    was_ambiguous = false;
-    if (e.converged) {
-      spdlog::info("localized after {} updates at ({:.2f}, {:.2f}, {:.1f} deg); truth ({:.2f}, {:.2f}, {:.1f} deg)", i,
-                   e.pose.x, e.pose.y, loc::rad2deg(e.pose.theta), drive_.pose().x, drive_.pose().y,
-                   loc::rad2deg(drive_.pose().theta));
-      start_tracking(e.pose, std::max(0.05, e.spread_xy), std::max(0.01, e.spread_theta));
-      return i;
-    }
+    spdlog::info("localized after {} updates at ({:.2f}, {:.2f}, {:.1f} deg); truth ({:.2f}, {:.2f}, {:.1f} deg)", i,
+                 e.pose.x, e.pose.y, loc::rad2deg(e.pose.theta), drive_.pose().x, drive_.pose().y,
+                 loc::rad2deg(drive_.pose().theta));
+    start_tracking(e.pose, std::max(0.05, e.spread_xy), std::max(0.01, e.spread_theta));
+    return i;
   }
   spdlog::warn("global localization did not converge in {} updates{}", max_updates,
                was_ambiguous ? " (ambiguous: places look alike)" : "");
