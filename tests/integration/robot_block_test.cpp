@@ -93,7 +93,7 @@ TEST(RobotBlock, RobotBlockingAnotherRobotIsEndedAfterTheBound) {
   // answered; its two answers wait for it.
   EXPECT_EQ(scalar("SELECT COUNT(*) FROM rr WHERE db_user = '" + a_name + "'"), 0);
   EXPECT_EQ(scalar("SELECT COUNT(*) FROM sa WHERE sentinel = 0 AND db_user = '" + a_name + "'"), 2);
-  const std::string log = read_file(temp_path(log_name));
+  const std::string log = read_file_once_it_has(temp_path(log_name), "of robot " + a_name + ": its transaction");
   EXPECT_NE(log.find("of robot " + a_name + ": its transaction"), std::string::npos) << log.substr(0, 6000);
   EXPECT_NE(log.find("blocked robot " + b_name + " for "), std::string::npos) << log.substr(0, 6000);
   EXPECT_EQ(log.find("of robot " + b_name + ":"), std::string::npos) << "B was ended too:\n" << log.substr(0, 6000);

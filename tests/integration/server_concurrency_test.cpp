@@ -608,7 +608,7 @@ TEST_P(StallGuard, BlockingRobotIsEndedAndOthersAreServed) {
       return true;
     }
   }, seconds(8))) << "A's connection is still alive";
-  const std::string log = read_file(temp_path(log_name));
+  const std::string log = read_file_once_it_has(temp_path(log_name), "of robot " + a_name + ":");
   EXPECT_NE(log.find("of robot " + a_name + ":"), std::string::npos) << log.substr(0, 6000);
   EXPECT_EQ(log.find("of robot " + b_name + ":"), std::string::npos) << "B was ended too:\n" << log.substr(0, 6000);
   // A's transaction was rolled back: its unread answers are still there for its next
@@ -685,7 +685,7 @@ TEST(ServerStall, OnlyTheBlockingRobotIsEnded) {
     }
   }, seconds(8))) << "A's connection is still alive";
 
-  const std::string log = read_file(temp_path("stall_bystander.log"));
+  const std::string log = read_file_once_it_has(temp_path("stall_bystander.log"), "of robot " + a_name + ":");
   EXPECT_NE(log.find("of robot " + a_name + ":"), std::string::npos) << log.substr(0, 6000);
   EXPECT_EQ(log.find("of robot " + c_name + ":"), std::string::npos)
       << "the server ended C, whose transaction blocked nothing:\n" << log.substr(0, 6000);

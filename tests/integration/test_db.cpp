@@ -81,6 +81,15 @@ std::string read_file(const std::string& path) {
   return ss.str();
 }
 
+std::string read_file_once_it_has(const std::string& path, const std::string& needle) {
+  std::string text;
+  wait_until([&] {
+    text = read_file(path);
+    return text.find(needle) != std::string::npos;
+  }, std::chrono::seconds(5));
+  return text;
+}
+
 std::map<std::string, std::string> yaml_fields(const std::string& text) {
   std::map<std::string, std::string> kv;
   std::istringstream in(text);

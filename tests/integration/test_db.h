@@ -62,6 +62,10 @@ void once_per_instance(const std::string& key, const std::function<void()>& setu
 std::string db_script();                               // "FLEETMAP_HOME=... FLEETMAP_PORT=... bash scripts/db.sh"
 void write_file(const std::string& path, const std::string& text);
 std::string read_file(const std::string& path);
+// The file once it contains needle, or as it is after 5 s. A server logs what it did after
+// doing it (the stall guard: after its KILL returns), so a test that saw the effect
+// can read the file before the line is there.
+std::string read_file_once_it_has(const std::string& path, const std::string& needle);
 // The "key: value" lines of a flat YAML text (a Nav2 map .yaml).
 std::map<std::string, std::string> yaml_fields(const std::string& text);
 
