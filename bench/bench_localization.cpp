@@ -191,6 +191,11 @@ int main(int argc, char** argv) {
                  "1: the rivals are judged with each recent scan registered at the best place (ambiguity.h), 0: on the "
                  "scans as the odometry stitches them, for every preset but seed (default: the preset's)")
       ->check(CLI::Range(0, 1));
+  app.add_option("--candidates-by-residual", s.candidates_by_residual,
+                 "1: the cloud's places other than the heaviest and the best are judged by the registered residual, as "
+                 "the rivals are (ambiguity.h), 0: by the tempered score's margin, for every preset but seed (default: "
+                 "the preset's)")
+      ->check(CLI::Range(0, 1));
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_option("--short-beyond", s.short_beyond,

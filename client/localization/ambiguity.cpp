@@ -1,6 +1,7 @@
 #include "client/localization/ambiguity.h"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -131,6 +132,44 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
     }
     ll.push_back(best);
   }
+  const size_t best_scored = static_cast<size_t>(std::max_element(ll.begin(), ll.end()) - ll.begin());
+  // With a residual, the cloud's other candidates are judged as the rivals are (below):
+  // the tempered score let places 120 m apart that are no twins come within its margin
+  // on the campus (0.019 per beam apart; by the registered residual, 0.4 and more).
+  const bool by_residual = o.candidates_by_residual && static_cast<bool>(residual);
+  // Refinement by residual: its peak is narrow, so the steps go finer than the filter's
+  // settling.
+  RefineOptions fine;
+  fine.min_step_xy = 0.003;
+  fine.min_step_theta = deg2rad(0.03);
+  fine.max_moves = 80;
+  // The reference: a candidate refined by residual, and registered: the scans' poses
+  // corrected there, where the stitching's error shows. A place alike along the path
+  // fits those same poses (a twin shares the path's geometry), so the others are refined
+  // and judged on them as a whole.
+  struct Reference {
+    RefinedPlace place;
+    PlaceScore judge;
+  };
+  const auto reference_at = [&](const Pose& p) {
+    Reference r{refine_place(p, residual, fine), residual};
+    if (registered) {
+      r.judge = registered(r.place.pose);
+      r.place.score = r.judge(r.place.pose);
+    }
+    return r;
+  };
+  size_t top = best_scored;
+  std::optional<Reference> reference;
+  if (by_residual || with_rivals) reference = reference_at(at[top]);
+  // The best by the tempered score and the heaviest (what estimate() reports) disagree:
+  // the residual, each registered at itself, decides which is the reference; the other
+  // is judged against it. (On the campus the tempered score put a place 120 m off 0.011
+  // per beam above the truth, whose residual was 0.4 better.)
+  if (by_residual && top != 0) {
+    Reference heaviest = reference_at(at[0]);
+    if (heaviest.place.score >= reference->place.score) reference = std::move(heaviest), top = 0;
+  }
   Ambiguity out = all_places(c);
   if (ll.size() >= 2) {
     std::vector<double> sorted = ll;
@@ -140,60 +179,64 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
     out.runner_up_gap = best - sorted[1];
     out.heaviest_gap = best - ll[0];
     for (size_t k = 0; k < c.list.size(); ++k) {
-      if (k > 0 && !(ll[k] >= best - o.margin_per_beam)) continue;
+      // The heaviest explains the scans worse than the best place: that one stays beside
+      // it (it is within the margin of itself), so the verdict is ambiguous.
+      if (k > 0 && k != top && (by_residual || !(ll[k] >= best - o.margin_per_beam))) continue;
       out.places.push_back(c.list[k].mean);
       out.weights.push_back(c.list[k].share);
     }
-    // The heaviest explains the scans worse than the best place: that one stays beside it
-    // (it is within the margin of itself), so the verdict is ambiguous.
   }
-  if (!with_rivals) return out;
-  // Rivals, each refined, against the best candidate refined likewise (or a rival would
-  // beat it by refinement alone), by residual: its peak is narrow, so the steps go finer
-  // than the filter's settling. One that comes onto a place already held is that place.
-  RefineOptions fine;
-  fine.min_step_xy = 0.003;
-  fine.min_step_theta = deg2rad(0.03);
-  fine.max_moves = 80;
-  const size_t top = static_cast<size_t>(std::max_element(ll.begin(), ll.end()) - ll.begin());
-  RefinedPlace reference = refine_place(at[top], residual, fine);
-  // Registered: the scans' poses corrected at the reference, where the stitching's error
-  // shows; a place alike along the path fits those same poses (a twin shares the path's
-  // geometry), and each rival is refined on them as a whole. A rival that, registered at
-  // itself, fits at least as well as the reference is a place too: the reference may be
-  // the wrong one of the two.
-  PlaceScore judge = residual;
-  if (registered) {
-    judge = registered(reference.pose);
-    reference.score = judge(reference.pose);
+  // What is judged by residual: the cloud's other candidates (at their best poses, with
+  // their weights), then the rivals (with none); a rival at a candidate is that candidate.
+  std::vector<Pose> others;
+  std::vector<double> others_weight;
+  if (by_residual)
+    for (size_t k = 1; k < c.list.size(); ++k)
+      if (k != top) others.push_back(at[k]), others_weight.push_back(c.list[k].share);
+  const auto a_candidate = [&](const Pose& q) {
+    for (size_t k = 0; k < c.list.size(); ++k)
+      if (distance(at[k], q) <= o.min_separation || distance(c.list[k].mean, q) <= o.min_separation) return true;
+    return false;
+  };
+  if (with_rivals)
+    for (size_t k = 0; k < std::min(rivals.size(), o.max_rivals); ++k)
+      if (!by_residual || !a_candidate(rivals[k])) others.push_back(rivals[k]), others_weight.push_back(0);
+  if (others.empty()) return out;
+  // Each other place refined on the reference's judge (or it would beat the reference by
+  // refinement alone) and within the margin is a place. One that, registered at itself,
+  // fits at least as well as the reference is a place too: the reference may be the
+  // wrong one of the two. One that comes onto a place already held is that place.
+  const PlaceScore& judge = reference->judge;
+  const RefinedPlace& ref = reference->place;
+  std::vector<Pose> held{at[0], c.list[0].mean, at[top], c.list[top].mean, ref.pose};
+  if (!by_residual) {
+    held.insert(held.end(), at.begin(), at.end());
+    for (const PlaceCandidate& p : c.list) held.push_back(p.mean);
   }
-  std::vector<Pose> held = at;
-  held.push_back(reference.pose);
-  for (const PlaceCandidate& p : c.list) held.push_back(p.mean);
   const auto apart = [&](const Pose& q) {
     return std::all_of(held.begin(), held.end(), [&](const Pose& p) { return distance(p, q) > o.min_separation; });
   };
-  // Each rival refined (and, near enough, registered at itself) on o.threads threads:
-  // this is most of the verdict's time. Then taken in order, as places apart.
-  const size_t n = std::min(rivals.size(), o.max_rivals);
+  // Each refined (and, near enough, registered at itself) on o.threads threads: this is
+  // most of the verdict's time. Then taken in order, as places apart.
+  const size_t n = others.size();
   std::vector<std::optional<RefinedPlace>> refined(n);  // none: not apart from the places held
   std::vector<double> self(n, -std::numeric_limits<double>::infinity());
   parallel_for(std::max(1, o.threads), n, [&](int, size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k) {
-      if (!apart(rivals[k])) continue;
-      const RefinedPlace& r = refined[k].emplace(refine_place(rivals[k], judge, fine));
-      if (registered && r.score < reference.score - o.rival_margin_z2 &&
-          r.score >= reference.score - o.rival_register_window_z2)
+      if (!apart(others[k])) continue;
+      const RefinedPlace& r = refined[k].emplace(refine_place(others[k], judge, fine));
+      if (registered && r.score < ref.score - o.rival_margin_z2 &&
+          r.score >= ref.score - o.rival_register_window_z2)
         self[k] = registered(r.pose)(r.pose);
     }
   });
   for (size_t k = 0; k < n; ++k) {
-    if (!refined[k] || !apart(rivals[k]) || !apart(refined[k]->pose)) continue;
+    if (!refined[k] || !apart(others[k]) || !apart(refined[k]->pose)) continue;
     const RefinedPlace& r = *refined[k];
-    if (!(r.score >= reference.score - o.rival_margin_z2) && !(self[k] >= reference.score)) continue;
+    if (!(r.score >= ref.score - o.rival_margin_z2) && !(self[k] >= ref.score)) continue;
     held.push_back(r.pose);
     out.places.push_back(r.pose);
-    out.weights.push_back(0);
+    out.weights.push_back(others_weight[k]);
   }
   return out;
 }

@@ -86,6 +86,10 @@ struct AmbiguityOptions {
   double register_max_xy = 0.3, register_max_theta = deg2rad(3.0);
   double register_step_xy = 0.05, register_step_theta = deg2rad(0.5);
   int register_moves = 40;
+  // The cloud's candidates other than the heaviest and the best are judged as rivals
+  // are (by the residual, registered), rather than by margin_per_beam, when a residual is
+  // given.
+  bool candidates_by_residual = true;
   int threads = 1;  // refining the rivals (the filter passes its own); the scores must allow it
 };
 

@@ -719,7 +719,8 @@ RegisteredResidual ParticleFilter::registered_residual(std::shared_ptr<const Res
 
 Ambiguity ParticleFilter::ambiguity(AmbiguityRule rule) const {
   if (rule == AmbiguityRule::Weight || recent_.empty()) return find_ambiguity(poses_, weights_, options_.ambiguity);
-  if (rivals_.empty()) return find_ambiguity(poses_, weights_, options_.ambiguity, recent_fit());
+  if (rivals_.empty() && !options_.ambiguity.candidates_by_residual)
+    return find_ambiguity(poses_, weights_, options_.ambiguity, recent_fit());
   AmbiguityOptions o = options_.ambiguity;
   o.threads = options_.threads;  // the residuals cast from any thread
   const auto scans = residual_scans();  // one stitching and one foreground pass for both scores

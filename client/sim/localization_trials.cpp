@@ -497,6 +497,7 @@ ParticleFilterOptions trial_filter(const TrialSettings& base, const std::string&
   if (base.foreground_width > 0) f.foreground.max_width = base.foreground_width;
   if (base.rivals >= 0) f.ambiguity.rivals = base.rivals > 0;
   if (base.register_scans >= 0) f.ambiguity.register_scans = base.register_scans > 0;
+  if (base.candidates_by_residual >= 0) f.ambiguity.candidates_by_residual = base.candidates_by_residual > 0;
   return f;
 }
 

@@ -88,6 +88,8 @@ struct TrialSettings {
   int rivals = -1;
   // AmbiguityOptions::register_scans: 1 on, 0 off, negative: the preset's.
   int register_scans = -1;
+  // AmbiguityOptions::candidates_by_residual: 1 on, 0 off, negative: the preset's.
+  int candidates_by_residual = -1;
   // After each global trial whose estimate ends out of bounds: whom the scans favour, the
   // truth or the estimate (GlobalTrial::truth_fit), to tell the model's failures (no
   // filter on it could pick the truth) from the filter's (it lost a better place).

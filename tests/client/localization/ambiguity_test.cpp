@@ -212,6 +212,53 @@ TEST(AmbiguityByLikelihood, ARivalThatFitsBetterRegisteredAtItselfIsAPlace) {
   EXPECT_FALSE(find_ambiguity(p, w, narrow, flat, rival, two_wells(0), registered(-0.01)).ambiguous());
 }
 
+// The cloud's own second place, with a residual given, is judged as a rival is: by the
+// residual, not by the tempered score's margin (which here calls A and C alike).
+TEST(AmbiguityByLikelihood, TheCloudsSecondPlaceIsJudgedByTheResidual) {
+  std::vector<Pose> p;
+  std::vector<double> w;
+  add_cluster(p, w, {3.2, 2.1, 0}, 0.7, 50);
+  add_cluster(p, w, {15.2, 6.1, 0}, 0.3, 50);
+  AmbiguityOptions o;
+  ASSERT_TRUE(find_ambiguity(p, w, o, flat).ambiguous());  // no residual: the margin's rule
+  // C worse by twice the residual's margin: one place, A.
+  const Ambiguity one = find_ambiguity(p, w, o, flat, {}, two_wells(2 * o.rival_margin_z2));
+  ASSERT_EQ(one.places.size(), 1u);
+  EXPECT_NEAR(one.places[0].x, 3.2, 0.05);
+  // Within it: both, C with its weight.
+  const Ambiguity two = find_ambiguity(p, w, o, flat, {}, two_wells(o.rival_margin_z2 / 2));
+  ASSERT_EQ(two.places.size(), 2u);
+  EXPECT_NEAR(two.places[1].x, 15.2, 0.05);
+  EXPECT_NEAR(two.weights[1], 0.3, 1e-9);
+  // Off: the margin's rule again, whatever the residual.
+  o.candidates_by_residual = false;
+  EXPECT_TRUE(find_ambiguity(p, w, o, flat, {}, two_wells(2 * o.rival_margin_z2)).ambiguous());
+}
+
+// The tempered score puts the lighter C first; the residual decides between it and the
+// heaviest A (what the filter reports): A far better, one place; C better, both, the
+// heaviest first.
+TEST(AmbiguityByLikelihood, TheResidualDecidesBetweenTheHeaviestAndTheBestScored) {
+  std::vector<Pose> p;
+  std::vector<double> w;
+  add_cluster(p, w, {3.2, 2.1, 0}, 0.7, 50);
+  add_cluster(p, w, {15.2, 6.1, 0}, 0.3, 50);
+  const PlaceScore c_first = [](const Pose& q) { return std::fabs(q.x - 15.2) < 0.5 ? -0.19 : -0.2; };
+  AmbiguityOptions o;
+  const Ambiguity a = find_ambiguity(p, w, o, c_first, {}, two_wells(2 * o.rival_margin_z2));
+  ASSERT_EQ(a.places.size(), 1u);
+  EXPECT_NEAR(a.places[0].x, 3.2, 0.05);
+  // A worse by the residual: the filter's estimate cannot be reported.
+  const PlaceScore a_worse = [](const Pose& q) { return two_wells(0)(q) - (std::hypot(q.x - 3.2, q.y - 2.1) < 0.5 ? 0.5 : 0); };
+  const Ambiguity b = find_ambiguity(p, w, o, c_first, {}, a_worse);
+  ASSERT_EQ(b.places.size(), 2u);
+  EXPECT_NEAR(b.places[0].x, 3.2, 0.05);
+  EXPECT_NEAR(b.places[1].x, 15.2, 0.05);
+  // The margin's rule keeps both whatever the residual.
+  o.candidates_by_residual = false;
+  EXPECT_EQ(find_ambiguity(p, w, o, c_first, {}, two_wells(2 * o.rival_margin_z2)).places.size(), 2u);
+}
+
 TEST(AmbiguityByLikelihood, ARivalThatRefinesOntoTheCloudsPlaceIsThatPlace) {
   std::vector<Pose> p;
   std::vector<double> w;
