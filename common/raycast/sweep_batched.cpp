@@ -8,6 +8,7 @@
 // ray_segment_distance() itself.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "common/raycast/beam_order.h"
 #include "common/raycast/sweep_constants.h"
@@ -64,6 +65,79 @@ constexpr double kSafeSine2 = 1e-8;
   return any != 0;
 }
 
+// Four walls at a time (GNU vector extensions, understood by g++ and clang; four
+// doubles are an AVX2 register in that clone, two SSE2 ones otherwise).
+using V4 = double __attribute__((vector_size(32)));
+using V4i = int64_t __attribute__((vector_size(32)));
+
+constexpr int64_t kBeyond = 1, kNearWall = 2, kExactWall = 4;  // wall_lanes() kind; 0: swept by hit_run()
+
+[[gnu::always_inline]] inline void abs4(const V4& x, V4& out) {
+  out = (V4)((V4i)x & INT64_MAX);  // std::fabs, bit for bit
+}
+
+// pseudo_angle() of four directions: the same operations. (Vectors go by reference:
+// by value, clang refuses them in the clone without AVX, whose ABI passes them apart.)
+[[gnu::always_inline]] inline void pseudo_angle4(const V4& x, const V4& y, V4& out) {
+  V4 abs_x, abs_y;
+  abs4(x, abs_x);
+  abs4(y, abs_y);
+  const V4 r = y / (abs_x + abs_y);
+  const V4i left = x < 0, below = y < 0;
+  const V4 zero = {}, base = left ? zero + 2.0 : (below ? zero + 4.0 : zero);
+  const V4 sign = left ? zero - 1.0 : zero + 1.0;
+  out = base + sign * r;
+}
+
+// What the sweep needs of four walls seen from the origin o, by the same operations in
+// the same order as the scalar sweep made them wall by wall (so the same bits): their
+// WallView fields, their pseudo-angle intervals in the robot's frame (rotated by
+// -theta: cos c, sin s) with the slack, and how each is swept (kind).
+[[gnu::always_inline]] inline void wall_lanes(const RaySegment* const* w, Point o, double c, double s, double reach2,
+                                              double* wx, double* wy, double* num_t, double* lo, double* hi,
+                                              int64_t* kind) {
+  const V4 ax = V4{w[0]->a.x, w[1]->a.x, w[2]->a.x, w[3]->a.x} - o.x;  // a = the wall's start - o
+  const V4 ay = V4{w[0]->a.y, w[1]->a.y, w[2]->a.y, w[3]->a.y} - o.y;
+  const V4 ex = {w[0]->e.x, w[1]->e.x, w[2]->e.x, w[3]->e.x}, ey = {w[0]->e.y, w[1]->e.y, w[2]->e.y, w[3]->e.y};
+  const V4 inv_len2 = {w[0]->inv_len2, w[1]->inv_len2, w[2]->inv_len2, w[3]->inv_len2};
+  const V4 tol_cross = {w[0]->tol_cross, w[1]->tol_cross, w[2]->tol_cross, w[3]->tol_cross};
+  const V4 zero = {};
+  V4 uq = -(ax * ex + ay * ey) * inv_len2;
+  uq = uq < 0 ? zero : (1 < uq ? zero + 1.0 : uq);  // std::clamp(uq, 0.0, 1.0)
+  const V4 qx = ax + uq * ex, qy = ay + uq * ey;     // the wall's point nearest the origin
+  const V4 d2 = qx * qx + qy * qy;
+  const V4 cr = ax * ey - ay * ex;  // cross(a, e)
+  // The wall's ends in the robot's frame, and the angle between them counter-clockwise:
+  // less than pi, since the origin is not on the wall.
+  const V4 arx = c * ax + s * ay, ary = c * ay - s * ax;
+  const V4 erx = c * ex + s * ey, ery = c * ey - s * ex;
+  const V4 brx = arx + erx, bry = ary + ery;
+  V4 p0, p1;
+  pseudo_angle4(arx, ary, p0);
+  pseudo_angle4(brx, bry, p1);
+  const V4i clockwise = arx * ery - ary * erx < 0;
+  const V4 pa = clockwise ? p1 : p0;
+  V4 pb = clockwise ? p0 : p1;
+  pb += pb < pa ? zero + 4.0 : zero;
+  // The origin near the wall's line (beyond its ends), where a beam may be parallel
+  // to it or the test's on-the-line branch applies: ray_segment_distance() decides.
+  const V4 bx = ax + ex, by = ay + ey;
+  const V4 aa = ax * ax + ay * ay, bb = bx * bx + by * by;
+  V4 abs_cr;
+  abs4(cr, abs_cr);
+  const V4i exact = (cr * cr * inv_len2 <= kSafeSine2 * (aa < bb ? bb : aa)) | (abs_cr <= tol_cross);
+  const V4i none = {};
+  const V4i k = (d2 > reach2 ? none + kBeyond : none) | (d2 <= kSweepNear * kSweepNear ? none + kNearWall : none) |
+                (exact ? none + kExactWall : none);
+  const V4 l = pa - kSweepAngleSlack, h = pb + kSweepAngleSlack;
+  __builtin_memcpy(wx, &ax, sizeof(V4));
+  __builtin_memcpy(wy, &ay, sizeof(V4));
+  __builtin_memcpy(num_t, &cr, sizeof(V4));
+  __builtin_memcpy(lo, &l, sizeof(V4));
+  __builtin_memcpy(hi, &h, sizeof(V4));
+  __builtin_memcpy(kind, &k, sizeof(V4i));
+}
+
 }  // namespace
 
 __attribute__((target_clones("avx2", "default"))) void sweep_batched(const SweepScan& in,
@@ -101,66 +175,75 @@ __attribute__((target_clones("avx2", "default"))) void sweep_batched(const Sweep
   if (arc_width < 0) arc_width += 4;
   const double reach2 = in.reach * in.reach;
   const std::vector<RaySegment>& walls = in.obstacles->walls;
-  size_t since_check = 0;
-  for (const CandidateGrid::Candidate& cand : in.near) {
+  // A special (stair, ramp), judged as a whole over the beams of its cone.
+  auto special = [&](uint32_t id) {
+    const SpecialObstacle& sp = in.obstacles->specials[id - in.walls];
+    const SpecialCone cone = special_cone(sp, o);
+    if (cone.dist - cone.radius > in.reach) return;
+    auto test = [&](Point d) { return sp.distance(o, d); };
+    if (cone.dist <= cone.radius + kSweepNear) {
+      exact_run(0, n, test);
+      return;
+    }
+    const double pc = pseudo_angle(to_robot(cone.centre)), half = cone.half_angle();
+    for_runs_between(order, pc - half, pc + half, [&](size_t k0, size_t k1) { exact_run(k0, k1, test); });
+  };
+  // The candidates go by blocks: the early stop is checked before each block but the
+  // first (before candidates 7, 15, 23, ...). In a block, (1) the candidates whose arc
+  // meets the scan's are packed; (2) their walls' intervals from the origin are computed
+  // four at a time in vectors; (3) the walls are swept one by one. Min is commutative:
+  // the order in which a block's walls and specials shorten ranges changes no bit.
+  constexpr size_t kLanes = 8;
+  alignas(32) uint32_t id[kLanes] = {};  // lanes past the packed walls name some wall, ignored
+  alignas(32) double wx[kLanes], wy[kLanes], num_t[kLanes], lo[kLanes], hi[kLanes];
+  alignas(32) int64_t kind[kLanes];
+  const CandidateGrid::Candidate* const cands = in.near.data();
+  const size_t count = in.near.size();
+  for (size_t begin = 0, end = std::min<size_t>(7, count); begin < count;
+       begin = end, end = std::min(count, end + kLanes)) {
     // Nearest first: once no beam is longer than this candidate's distance from the
-    // cell, nothing further on can shorten one. Checked every few candidates.
-    if (++since_check == 8) {
-      since_check = 0;
-      if (!any_longer(r, n, cand.nearest)) break;
-    }
-    // The candidate's arc from the cell (candidate_grid.h) misses the scan's: no beam
-    // comes near it.
-    if (!all_around) {
-      double d1 = cand.arc_lo - arc_start, d2 = -d1;
-      d1 += d1 < 0 ? 4 : 0;
-      d2 += d2 < 0 ? 4 : 0;
-      if (!(d1 <= arc_width || d2 <= cand.arc_width)) continue;
-    }
-    if (cand.id >= in.walls) {
-      const SpecialObstacle& sp = in.obstacles->specials[cand.id - in.walls];
-      const SpecialCone cone = special_cone(sp, o);
-      if (cone.dist - cone.radius > in.reach) continue;
-      auto test = [&](Point d) { return sp.distance(o, d); };
-      if (cone.dist <= cone.radius + kSweepNear) {
-        exact_run(0, n, test);
+    // cell, nothing further on can shorten one.
+    if (begin > 0 && !any_longer(r, n, cands[begin].nearest)) break;
+    size_t m = 0;
+    for (size_t i = begin; i < end; ++i) {
+      const CandidateGrid::Candidate& cand = cands[i];
+      // The candidate's arc from the cell (candidate_grid.h) misses the scan's: no beam
+      // comes near it.
+      bool pass = true;
+      if (!all_around) {
+        double d1 = cand.arc_lo - arc_start, d2 = -d1;
+        d1 += d1 < 0 ? 4 : 0;
+        d2 += d2 < 0 ? 4 : 0;
+        pass = (d1 <= arc_width) | (d2 <= cand.arc_width);
+      }
+      if (cand.id >= in.walls) {
+        if (pass) special(cand.id);
         continue;
       }
-      const double pc = pseudo_angle(to_robot(cone.centre)), half = cone.half_angle();
-      for_runs_between(order, pc - half, pc + half, [&](size_t k0, size_t k1) { exact_run(k0, k1, test); });
-      continue;
+      id[m] = cand.id;
+      m += pass ? 1 : 0;
     }
-    const RaySegment& seg = walls[cand.id];
-    const Point a = seg.a - o;
-    const double uq = std::clamp(-dot(a, seg.e) * seg.inv_len2, 0.0, 1.0);
-    const Point q = a + uq * seg.e;  // the wall's point nearest the origin
-    const double d2 = dot(q, q);
-    if (d2 > reach2) continue;  // every hit would be past rmax
-    auto test = [&](Point d) { return ray_segment_distance(seg, o, d); };
-    const WallView w{a.x, a.y, seg.e.x, seg.e.y, cross(a, seg.e), -seg.tol_u, 1 + seg.tol_u};
-    if (d2 <= kSweepNear * kSweepNear) {
-      exact_run(0, n, test);
-      continue;
+    if (m == 0) continue;
+    for (size_t g = 0; g < kLanes; g += 4) {
+      const RaySegment* const four[4] = {&walls[id[g]], &walls[id[g + 1]], &walls[id[g + 2]], &walls[id[g + 3]]};
+      wall_lanes(four, o, c, s, reach2, wx + g, wy + g, num_t + g, lo + g, hi + g, kind + g);
     }
-    // The wall's ends in the robot's frame, and the angle between them counter-clockwise:
-    // less than pi, since the origin is not on the wall.
-    const Point ar = to_robot(a), er = to_robot(seg.e);
-    const double p0 = pseudo_angle(ar), p1 = pseudo_angle(ar + er);
-    const bool clockwise = cross(ar, er) < 0;
-    const double pa = clockwise ? p1 : p0;
-    double pb = clockwise ? p0 : p1;
-    pb += pb < pa ? 4.0 : 0.0;
-    // The origin near the wall's line (beyond its ends), where a beam may be parallel
-    // to it or the test's on-the-line branch applies: ray_segment_distance() decides.
-    const Point b = a + seg.e;
-    const bool exact = w.num_t * w.num_t * seg.inv_len2 <= kSafeSine2 * std::max(dot(a, a), dot(b, b)) ||
-                       std::fabs(w.num_t) <= seg.tol_cross;
-    for_runs_between(order, pa - kSweepAngleSlack, pb + kSweepAngleSlack, [&](size_t k0, size_t k1) __attribute__((always_inline)) {
-      if (exact)
-        exact_run(k0, k1, test);
-      else
+    for (size_t j = 0; j < m; ++j) {
+      if (kind[j] & kBeyond) continue;  // every hit would be past rmax
+      const RaySegment& seg = walls[id[j]];
+      if (kind[j] != 0) {
+        auto test = [&](Point d) { return ray_segment_distance(seg, o, d); };
+        if (kind[j] & kNearWall)
+          exact_run(0, n, test);
+        else
+          for_runs_between(order, lo[j], hi[j], [&](size_t k0, size_t k1) { exact_run(k0, k1, test); });
+        continue;
+      }
+      const WallView w{wx[j], wy[j], seg.e.x, seg.e.y, num_t[j], -seg.tol_u, 1 + seg.tol_u};
+      for_runs_between(order, lo[j], hi[j], [&](size_t k0, size_t k1) __attribute__((always_inline)) {
         hit_run(dx, dy, r, k0, k1, w);
-    });
+      });
+    }
   }
   for (size_t k = 0; k < n; ++k) ranges[order.beam[k]] = r[k];
 }
