@@ -224,7 +224,7 @@ __attribute__((target_clones("avx2", "default"))) void sweep_batched(const Sweep
       m += pass ? 1 : 0;
     }
     if (m == 0) continue;
-    for (size_t g = 0; g < kLanes; g += 4) {
+    for (size_t g = 0; g < m; g += 4) {
       const RaySegment* const four[4] = {&walls[id[g]], &walls[id[g + 1]], &walls[id[g + 2]], &walls[id[g + 3]]};
       wall_lanes(four, o, c, s, reach2, wx + g, wy + g, num_t + g, lo + g, hi + g, kind + g);
     }
