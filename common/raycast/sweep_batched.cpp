@@ -199,7 +199,7 @@ __attribute__((target_clones("avx2", "default"))) void sweep_batched(const Sweep
   alignas(32) int64_t kind[kLanes];
   const CandidateGrid::Candidate* const cands = in.near.data();
   const size_t count = in.near.size();
-  for (size_t begin = 0, end = std::min<size_t>(7, count); begin < count;
+  for (size_t begin = 0, end = std::min<size_t>(kLanes - 1, count); begin < count;
        begin = end, end = std::min(count, end + kLanes)) {
     // Nearest first: once no beam is longer than this candidate's distance from the
     // cell, nothing further on can shorten one.
