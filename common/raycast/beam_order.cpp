@@ -44,6 +44,8 @@ const BeamOrder& beam_order(const std::vector<double>& rel) {
     order.first[b] = static_cast<uint32_t>(
         std::lower_bound(order.pseudo.begin(), order.pseudo.end(), static_cast<double>(b) / BeamOrder::kBinsPerUnit) -
         order.pseudo.begin());
+  order.one_per_bin = true;
+  for (int b = 0; b < BeamOrder::kBins; ++b) order.one_per_bin &= order.first[b + 1] - order.first[b] <= 1;
   return order;
 }
 

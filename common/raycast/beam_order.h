@@ -39,6 +39,8 @@ struct BeamOrder {
   // to position arc_last; all_around when the beams leave no gap worth testing against.
   size_t arc_first = 0, arc_last = 0;
   bool all_around = true;
+  // No bin of the table holds two beams: lower() takes at most one step from first[].
+  bool one_per_bin = false;
 
   // The first k with pseudo[k] >= x (strict: > x), for x in [0, 4].
   size_t lower(double x, bool strict) const {

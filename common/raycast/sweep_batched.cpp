@@ -89,13 +89,38 @@ constexpr int64_t kBeyond = 1, kNearWall = 2, kExactWall = 4;  // wall_lanes() k
   out = base + sign * r;
 }
 
+using V4si = int32_t __attribute__((vector_size(16)));
+
+// BeamOrder::lower(x, strict) of four x, for an order with one_per_bin: the same bin
+// (x clamped to [0, 4] first, which gives the same bins, and a NaN of a lane that is
+// not used bin 0), then the one step.
+template <bool strict>
+[[gnu::always_inline]] inline void lower4(const BeamOrder& order, const V4& x, V4i& out) {
+  const V4 zero = {};
+  V4 xc = x >= 0 ? x : zero;
+  xc = xc > 4 ? zero + 4.0 : xc;
+  const V4si bin = __builtin_convertvector(xc * BeamOrder::kBinsPerUnit, V4si);
+  const uint32_t* first = order.first.data();
+  const V4i k = {first[bin[0]], first[bin[1]], first[bin[2]], first[bin[3]]};
+  const int64_t n = static_cast<int64_t>(order.pseudo.size());
+  const V4i inside = k < n;
+  const V4i kc = inside ? k : k - 1;  // n > 0
+  const double* pseudo = order.pseudo.data();
+  const V4 p = {pseudo[kc[0]], pseudo[kc[1]], pseudo[kc[2]], pseudo[kc[3]]};
+  const V4i below = strict ? p <= x : p < x;
+  out = k - (inside & below);  // a mask is -1
+}
+
 // What the sweep needs of four walls seen from the origin o, by the same operations in
 // the same order as the scalar sweep made them wall by wall (so the same bits): their
 // WallView fields, their pseudo-angle intervals in the robot's frame (rotated by
 // -theta: cos c, sin s) with the slack, and how each is swept (kind).
+// With order.one_per_bin, also the runs of beams for_runs_between() would give: [k0, k1)
+// and [0, kb).
 [[gnu::always_inline]] inline void wall_lanes(const RaySegment* const* w, Point o, double c, double s, double reach2,
-                                              double* wx, double* wy, double* num_t, double* lo, double* hi,
-                                              int64_t* kind) {
+                                              const BeamOrder& order, double* wx, double* wy, double* num_t,
+                                              double* lo, double* hi, int64_t* kind, int64_t* k0, int64_t* k1,
+                                              int64_t* kb) {
   const V4 ax = V4{w[0]->a.x, w[1]->a.x, w[2]->a.x, w[3]->a.x} - o.x;  // a = the wall's start - o
   const V4 ay = V4{w[0]->a.y, w[1]->a.y, w[2]->a.y, w[3]->a.y} - o.y;
   const V4 ex = {w[0]->e.x, w[1]->e.x, w[2]->e.x, w[3]->e.x}, ey = {w[0]->e.y, w[1]->e.y, w[2]->e.y, w[3]->e.y};
@@ -126,9 +151,9 @@ constexpr int64_t kBeyond = 1, kNearWall = 2, kExactWall = 4;  // wall_lanes() k
   V4 abs_cr;
   abs4(cr, abs_cr);
   const V4i exact = (cr * cr * inv_len2 <= kSafeSine2 * (aa < bb ? bb : aa)) | (abs_cr <= tol_cross);
-  const V4i none = {};
-  const V4i k = (d2 > reach2 ? none + kBeyond : none) | (d2 <= kSweepNear * kSweepNear ? none + kNearWall : none) |
-                (exact ? none + kExactWall : none);
+  const V4i nil = {};
+  const V4i k = (d2 > reach2 ? nil + kBeyond : nil) | (d2 <= kSweepNear * kSweepNear ? nil + kNearWall : nil) |
+                (exact ? nil + kExactWall : nil);
   const V4 l = pa - kSweepAngleSlack, h = pb + kSweepAngleSlack;
   __builtin_memcpy(wx, &ax, sizeof(V4));
   __builtin_memcpy(wy, &ay, sizeof(V4));
@@ -136,6 +161,20 @@ constexpr int64_t kBeyond = 1, kNearWall = 2, kExactWall = 4;  // wall_lanes() k
   __builtin_memcpy(lo, &l, sizeof(V4));
   __builtin_memcpy(hi, &h, sizeof(V4));
   __builtin_memcpy(kind, &k, sizeof(V4i));
+  if (!order.one_per_bin) return;
+  // for_runs_between(order, l, h): the whole circle, or [l + 4, 4] and [0, h] when l < 0,
+  // or [l, 4] and [0, h - 4] when h >= 4 (lower(4, true) is n, lower(0, false) is 0).
+  const V4i whole = h - l >= 4, wrap = (l < 0) | (h >= 4);
+  const V4 lw = l < 0 ? l + 4 : l, hw = h >= 4 ? h - 4 : h;
+  V4i from, to;
+  lower4<false>(order, lw, from);
+  lower4<true>(order, hw, to);
+  const V4i none = {};
+  const int64_t n = static_cast<int64_t>(order.pseudo.size());
+  const V4i r0 = whole ? none : from, r1 = (whole | wrap) ? none + n : to, rb = whole ? none : (wrap ? to : none);
+  __builtin_memcpy(k0, &r0, sizeof(V4i));
+  __builtin_memcpy(k1, &r1, sizeof(V4i));
+  __builtin_memcpy(kb, &rb, sizeof(V4i));
 }
 
 }  // namespace
@@ -196,7 +235,8 @@ __attribute__((target_clones("avx2", "default"))) void sweep_batched(const Sweep
   constexpr size_t kLanes = 8;
   alignas(32) uint32_t id[kLanes] = {};  // lanes past the packed walls name some wall, ignored
   alignas(32) double wx[kLanes], wy[kLanes], num_t[kLanes], lo[kLanes], hi[kLanes];
-  alignas(32) int64_t kind[kLanes];
+  alignas(32) int64_t kind[kLanes], k0[kLanes], k1[kLanes], kb[kLanes];
+  const bool lanes_runs = order.one_per_bin;
   const CandidateGrid::Candidate* const cands = in.near.data();
   const size_t count = in.near.size();
   for (size_t begin = 0, end = std::min<size_t>(kLanes - 1, count); begin < count;
@@ -226,7 +266,8 @@ __attribute__((target_clones("avx2", "default"))) void sweep_batched(const Sweep
     if (m == 0) continue;
     for (size_t g = 0; g < m; g += 4) {
       const RaySegment* const four[4] = {&walls[id[g]], &walls[id[g + 1]], &walls[id[g + 2]], &walls[id[g + 3]]};
-      wall_lanes(four, o, c, s, reach2, wx + g, wy + g, num_t + g, lo + g, hi + g, kind + g);
+      wall_lanes(four, o, c, s, reach2, order, wx + g, wy + g, num_t + g, lo + g, hi + g, kind + g, k0 + g, k1 + g,
+                 kb + g);
     }
     for (size_t j = 0; j < m; ++j) {
       if (kind[j] & kBeyond) continue;  // every hit would be past rmax
@@ -240,8 +281,13 @@ __attribute__((target_clones("avx2", "default"))) void sweep_batched(const Sweep
         continue;
       }
       const WallView w{wx[j], wy[j], seg.e.x, seg.e.y, num_t[j], -seg.tol_u, 1 + seg.tol_u};
-      for_runs_between(order, lo[j], hi[j], [&](size_t k0, size_t k1) __attribute__((always_inline)) {
-        hit_run(dx, dy, r, k0, k1, w);
+      if (lanes_runs) {
+        if (k0[j] < k1[j]) hit_run(dx, dy, r, k0[j], k1[j], w);
+        if (kb[j] > 0) hit_run(dx, dy, r, 0, kb[j], w);
+        continue;
+      }
+      for_runs_between(order, lo[j], hi[j], [&](size_t from, size_t to) __attribute__((always_inline)) {
+        hit_run(dx, dy, r, from, to, w);
       });
     }
   }
