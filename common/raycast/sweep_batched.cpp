@@ -183,22 +183,28 @@ __attribute__((target_clones("avx2", "default"))) void sweep_batched(const Sweep
                                                                       const std::vector<double>& relative_angles,
                                                                       double* ranges) {
   const size_t n = relative_angles.size();
-  std::fill(ranges, ranges + n, in.rmax);
-  if (in.near.empty() || n == 0) return;
+  if (in.near.empty() || n == 0) {
+    std::fill(ranges, ranges + n, in.rmax);
+    return;
+  }
   const BeamOrder& order = beam_order(relative_angles);
   thread_local Beams beams;
-  beams.dx.resize(n);
-  beams.dy.resize(n);
+  const size_t n4 = (n + 3) / 4 * 4;  // the directions are rotated four at a time
+  beams.dx.resize(n4);
+  beams.dy.resize(n4);
   beams.r.assign(n, in.rmax);
   double* __restrict dx = beams.dx.data();
   double* __restrict dy = beams.dy.data();
   double* __restrict r = beams.r.data();
   // As scan_directions() rotates them: the same bits.
   const double c = std::cos(in.theta), s = std::sin(in.theta);
-  for (size_t k = 0; k < n; ++k) {
-    const Point u = order.unit[k];
-    dx[k] = c * u.x - s * u.y;
-    dy[k] = s * u.x + c * u.y;
+  for (size_t k = 0; k < n4; k += 4) {
+    V4 ux, uy;
+    __builtin_memcpy(&ux, order.unit_x.data() + k, sizeof(V4));
+    __builtin_memcpy(&uy, order.unit_y.data() + k, sizeof(V4));
+    const V4 x = c * ux - s * uy, y = s * ux + c * uy;
+    __builtin_memcpy(dx + k, &x, sizeof(V4));
+    __builtin_memcpy(dy + k, &y, sizeof(V4));
   }
   const Point o = in.origin;
   auto to_robot = [&](Point v) { return Point{c * v.x + s * v.y, c * v.y - s * v.x}; };  // rotation by -theta
