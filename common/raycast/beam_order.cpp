@@ -48,6 +48,9 @@ const BeamOrder& beam_order(const std::vector<double>& rel) {
     order.first[b] = static_cast<uint32_t>(
         std::lower_bound(order.pseudo.begin(), order.pseudo.end(), static_cast<double>(b) / BeamOrder::kBinsPerUnit) -
         order.pseudo.begin());
+  order.rotated = n > 0;
+  order.rotation = n > 0 ? order.beam[0] : 0;
+  for (size_t k = 0; k < n; ++k) order.rotated &= order.beam[k] == (k + order.rotation) % n;
   order.one_per_bin = true;
   for (int b = 0; b < BeamOrder::kBins; ++b) order.one_per_bin &= order.first[b + 1] - order.first[b] <= 1;
   return order;

@@ -43,6 +43,10 @@ struct BeamOrder {
   bool all_around = true;
   // No bin of the table holds two beams: lower() takes at most one step from first[].
   bool one_per_bin = false;
+  // beam[k] is (k + rotation) % n for every k (beams given by angle, as scans are), or
+  // this is false.
+  bool rotated = false;
+  size_t rotation = 0;
 
   // The first k with pseudo[k] >= x (strict: > x), for x in [0, 4].
   size_t lower(double x, bool strict) const {

@@ -297,6 +297,12 @@ __attribute__((target_clones("avx2", "default"))) void sweep_batched(const Sweep
       });
     }
   }
+  if (order.rotated) {  // two copies
+    const size_t off = order.rotation;
+    std::copy(r, r + (n - off), ranges + off);
+    std::copy(r + (n - off), r + n, ranges);
+    return;
+  }
   for (size_t k = 0; k < n; ++k) ranges[order.beam[k]] = r[k];
 }
 

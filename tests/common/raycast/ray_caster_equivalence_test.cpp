@@ -5,6 +5,7 @@
 // also cast on a copy with varied wall heights and generated stairs and ramps.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -246,13 +247,16 @@ TEST(RayCasterEquivalence, SweepKernelsAndCulling) {
 // Scans of other beam sets than 131 over 180 degrees, through the batched sweep: every
 // direction (the scan's arc is the whole circle), more beams than the beam order's table
 // has bins for one each (sweep_batched then finds runs through for_runs_between()), and a
-// narrow fan. On the dense floor with stairs and ramps, and on the campus.
+// narrow fan, and beams not given by angle (the ranges are then put back one by one, not
+// copied as a rotation of the beam order). On the dense floor with stairs and ramps, and
+// on the campus.
 TEST(RayCasterEquivalence, OtherBeamSets) {
   struct BeamSet {
     int beams;
     double fov;
+    bool shuffled = false;
   };
-  const BeamSet sets[] = {{360, 2 * kPi}, {2001, 0.5 * kPi}, {1081, 1.5 * kPi}, {7, 0.2}};
+  const BeamSet sets[] = {{360, 2 * kPi}, {2001, 0.5 * kPi}, {1081, 1.5 * kPi}, {7, 0.2}, {131, kPi, true}};
   const RayCasterOptions opt{0.3, 15.0};
   for (const Map& m : {varied(gdc1(), 5), campus()}) {
     const SeedRayCaster seed(m, opt);
@@ -261,10 +265,11 @@ TEST(RayCasterEquivalence, OtherBeamSets) {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> ux(r.xmin, r.xmax), uy(r.ymin, r.ymax), ua(-kPi, kPi);
     for (const BeamSet& set : sets) {
-      const std::vector<double> rel = evenly_spread_angles(set.beams, set.fov);
-      if (set.beams == 2001) {
-        EXPECT_FALSE(beam_order(rel).one_per_bin) << "the test misses the path it is for";
-      }
+      std::vector<double> rel = evenly_spread_angles(set.beams, set.fov);
+      if (set.shuffled) std::shuffle(rel.begin(), rel.end(), rng);
+      // Each path of sweep_batched is taken.
+      EXPECT_EQ(beam_order(rel).one_per_bin, set.beams != 2001) << set.beams;
+      EXPECT_EQ(beam_order(rel).rotated, !set.shuffled) << set.beams;
       std::vector<double> want(rel.size()), got(rel.size());
       int mismatches = 0, hits = 0, rays = 0;
       for (int i = 0; i < 40; ++i) {
