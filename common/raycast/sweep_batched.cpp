@@ -5,7 +5,9 @@
 // to the wall, with the same operations in the same order (no contraction into FMA: the
 // AVX2 clone does not enable it), so the ranges are the same bits. The cases that test
 // decides apart (origin on the wall's line, a beam parallel to the wall) go through
-// ray_segment_distance() itself.
+// ray_segment_distance() itself. What the sweep needs of each wall before its runs (its
+// interval of pseudo-angles, its runs of beams, how it is swept) is computed for four
+// walls at a time (wall_lanes), again by the scalar code's operations in its order.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
