@@ -21,9 +21,13 @@ const BeamOrder& beam_order(const std::vector<double>& rel) {
   std::stable_sort(order.beam.begin(), order.beam.end(), [&](uint32_t l, uint32_t r) { return p[l] < p[r]; });
   order.pseudo.resize(n);
   order.unit.resize(n);
+  order.unit_x.assign((n + 3) / 4 * 4, 0.0);
+  order.unit_y.assign((n + 3) / 4 * 4, 0.0);
   for (size_t k = 0; k < n; ++k) {
     order.pseudo[k] = p[order.beam[k]];
     order.unit[k] = ray_direction(rel[order.beam[k]]);
+    order.unit_x[k] = order.unit[k].x;
+    order.unit_y[k] = order.unit[k].y;
   }
   // The largest gap between cyclically consecutive beams; the arc is the rest.
   order.all_around = true;
@@ -44,6 +48,11 @@ const BeamOrder& beam_order(const std::vector<double>& rel) {
     order.first[b] = static_cast<uint32_t>(
         std::lower_bound(order.pseudo.begin(), order.pseudo.end(), static_cast<double>(b) / BeamOrder::kBinsPerUnit) -
         order.pseudo.begin());
+  order.rotated = n > 0;
+  order.rotation = n > 0 ? order.beam[0] : 0;
+  for (size_t k = 0; k < n; ++k) order.rotated &= order.beam[k] == (k + order.rotation) % n;
+  order.one_per_bin = true;
+  for (int b = 0; b < BeamOrder::kBins; ++b) order.one_per_bin &= order.first[b + 1] - order.first[b] <= 1;
   return order;
 }
 

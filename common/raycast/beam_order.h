@@ -34,11 +34,19 @@ struct BeamOrder {
   std::vector<double> pseudo;   // of the relative directions (robot's frame), sorted
   std::vector<uint32_t> beam;   // beam[k]: the beam with the k-th pseudo-angle
   std::vector<Point> unit;      // unit[k]: ray_direction() of that beam's relative angle
+  // The same by coordinate, for vector loads: n rounded up to a multiple of 4, zeros after.
+  std::vector<double> unit_x, unit_y;
   std::vector<uint32_t> first;  // first[b]: how many pseudo-angles are below b / kBinsPerUnit
   // The smallest arc holding every beam runs counter-clockwise from position arc_first
   // to position arc_last; all_around when the beams leave no gap worth testing against.
   size_t arc_first = 0, arc_last = 0;
   bool all_around = true;
+  // No bin of the table holds two beams: lower() takes at most one step from first[].
+  bool one_per_bin = false;
+  // beam[k] is (k + rotation) % n for every k (beams given by angle, as scans are), or
+  // this is false.
+  bool rotated = false;
+  size_t rotation = 0;
 
   // The first k with pseudo[k] >= x (strict: > x), for x in [0, 4].
   size_t lower(double x, bool strict) const {

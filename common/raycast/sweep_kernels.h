@@ -10,7 +10,9 @@
 //             so the beams a wall covers are a run of consecutive entries, tested in a
 //             loop the compiler vectorises (AVX2 where the processor has it, SSE2
 //             otherwise); the sweep stops once no beam's range is longer than the next
-//             candidate's distance (the list is nearest first).
+//             candidate's distance (the list is nearest first). The list goes by blocks
+//             of 8 candidates: the walls that pass the arc test are packed, and their
+//             intervals and runs of beams computed four walls at a time.
 #include <cstddef>
 #include <cstdint>
 #include <span>

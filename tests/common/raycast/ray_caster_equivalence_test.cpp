@@ -5,6 +5,7 @@
 // also cast on a copy with varied wall heights and generated stairs and ramps.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "common/io/amrl_import.h"
+#include "common/raycast/beam_order.h"
 #include "common/raycast/grid_ray_caster.h"
 #include "common/map/map_window.h"
 #include "common/map/ramp.h"
@@ -240,6 +242,53 @@ TEST(RayCasterEquivalence, SweepKernelsAndCulling) {
       sweep("batched 1 m, 32", sweep_options(1, 32, SweepKernel::batched)),
       sweep("batched 0.5 m, 8", sweep_options(0.5, 8, SweepKernel::batched)), fast()};
   expect_equivalent("GDC1 (varied)", varied(gdc1(), 4), 0.3, sweeps, kRays / 10, 0.2);
+}
+
+// Scans of other beam sets than 131 over 180 degrees, through the batched sweep: every
+// direction (the scan's arc is the whole circle), more beams than the beam order's table
+// has bins for one each (sweep_batched then finds runs through for_runs_between()), and a
+// narrow fan, and beams not given by angle (the ranges are then put back one by one, not
+// copied as a rotation of the beam order). On the dense floor with stairs and ramps, and
+// on the campus.
+TEST(RayCasterEquivalence, OtherBeamSets) {
+  struct BeamSet {
+    int beams;
+    double fov;
+    bool shuffled = false;
+  };
+  const BeamSet sets[] = {{360, 2 * kPi}, {2001, 0.5 * kPi}, {1081, 1.5 * kPi}, {7, 0.2}, {131, kPi, true}};
+  const RayCasterOptions opt{0.3, 15.0};
+  for (const Map& m : {varied(gdc1(), 5), campus()}) {
+    const SeedRayCaster seed(m, opt);
+    const SweepRayCaster fast(m, opt);
+    const Rect r = m.border.rect();
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> ux(r.xmin, r.xmax), uy(r.ymin, r.ymax), ua(-kPi, kPi);
+    for (const BeamSet& set : sets) {
+      std::vector<double> rel = evenly_spread_angles(set.beams, set.fov);
+      if (set.shuffled) std::shuffle(rel.begin(), rel.end(), rng);
+      // Each path of sweep_batched is taken.
+      EXPECT_EQ(beam_order(rel).one_per_bin, set.beams != 2001) << set.beams;
+      EXPECT_EQ(beam_order(rel).rotated, !set.shuffled) << set.beams;
+      std::vector<double> want(rel.size()), got(rel.size());
+      int mismatches = 0, hits = 0, rays = 0;
+      for (int i = 0; i < 40; ++i) {
+        const Point o{ux(rng), uy(rng)};
+        const double theta = ua(rng);
+        seed.cast_scan(o, theta, rel, want.data());
+        fast.cast_scan(o, theta, rel, got.data());
+        for (size_t j = 0; j < rel.size(); ++j) {
+          ++rays;
+          hits += got[j] < opt.rmax;
+          if (!(std::fabs(want[j] - got[j]) <= kTolerance) && ++mismatches <= 5)
+            ADD_FAILURE() << set.beams << " beams over " << set.fov << " rad: origin (" << o.x << ", " << o.y
+                          << ") angle " << theta + rel[j] << ": seed " << want[j] << ", got " << got[j];
+        }
+      }
+      EXPECT_EQ(mismatches, 0) << set.beams << " beams over " << set.fov << " rad";
+      EXPECT_GT(hits, rays / 20) << set.beams << " beams: too few rays hit to compare";
+    }
+  }
 }
 
 }  // namespace
