@@ -25,7 +25,9 @@
 //    heaviest place that explains them worse than another is kept beside it (the
 //    weight and the scans disagree: ambiguous). A diffuse cloud (the candidates
 //    holding less than diffuse_share of the weight, e.g. just after init_global) is
-//    ambiguous whatever the scans say.
+//    ambiguous whatever the scans say. With a residual given (the rivals' below), the
+//    residual decides between the heaviest and the best, and the other candidates are
+//    judged as the rivals are (candidates_by_residual).
 #include <cstddef>
 #include <functional>
 #include <limits>
