@@ -196,6 +196,9 @@ int main(int argc, char** argv) {
                  "the rivals are (ambiguity.h), 0: by the tempered score's margin, for every preset but seed (default: "
                  "the preset's)")
       ->check(CLI::Range(0, 1));
+  app.add_flag("--lost-short-needs-foreground", s.lost.short_needs_foreground,
+               "the lost detector counts a beam stopped short against the pose unless foreground.h flags it (a person; "
+               "lost_detector.h)");
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_option("--short-beyond", s.short_beyond,

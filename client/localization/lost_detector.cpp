@@ -6,10 +6,13 @@
 namespace fleetmap::localization {
 
 double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vector<double>& beams,
-                      const std::vector<double>& ranges, double tolerance) {
+                      const std::vector<double>& ranges, double tolerance, const std::vector<uint8_t>* foreground) {
   if (ranges.size() != beams.size())
     throw std::invalid_argument("scan_agreement: expected one range per beam (" + std::to_string(beams.size()) +
                                 "), got " + std::to_string(ranges.size()));
+  if (foreground && foreground->size() != beams.size())
+    throw std::invalid_argument("scan_agreement: expected one foreground flag per beam (" +
+                                std::to_string(beams.size()) + "), got " + std::to_string(foreground->size()));
   if (beams.empty()) return 0;
   std::vector<double> cast(beams.size());
   caster.cast_scan(pose.point(), pose.theta, beams, cast.data());
@@ -20,7 +23,7 @@ double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vect
   for (size_t j = 0; j < beams.size(); ++j) {
     const double d = ranges[j] - cast[j];
     if (std::abs(d) <= tolerance) ++agree;
-    else if (d > 0) ++through;
+    else if (d > 0 || (foreground && !(*foreground)[j])) ++through;
   }
   if (agree + through == 0) return 1.0;  // every beam blocked: nothing contradicts the pose
   return static_cast<double>(agree) / static_cast<double>(agree + through);

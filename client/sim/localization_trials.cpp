@@ -10,6 +10,7 @@
 #include "client/sim/drive_simulator.h"
 #include "client/sim/generated_maps.h"
 #include "client/sim/twin_places.h"
+#include "client/localization/foreground.h"
 #include "client/localization/free_space.h"
 #include "client/localization/global_search.h"
 #include "client/localization/place_refinement.h"
@@ -335,7 +336,10 @@ struct TrackedRobot {
     filter_->predict(st.odometry);
     const std::vector<double> scan = laser_.scan(st.truth);
     filter_->update(scan, compass_reading(st.truth, s_.compass_sd, filter_->options().compass_half_width, rng_));
-    detector_.update(scan_agreement(*world_, filter_->estimate().pose, beams_, scan, s_.lost.tolerance));
+    std::vector<uint8_t> people;
+    if (s_.lost.short_needs_foreground) people = foreground_returns(scan, beams_, laser_.rmax(), filter_->options().foreground);
+    detector_.update(scan_agreement(*world_, filter_->estimate().pose, beams_, scan, s_.lost.tolerance,
+                                    s_.lost.short_needs_foreground ? &people : nullptr));
     return st.driven;
   }
   // Moved without odometry: from here on the driver starts at `to`.

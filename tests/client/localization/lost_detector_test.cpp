@@ -5,8 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
+#include "client/localization/foreground.h"
 #include "client/sim/laser_simulator.h"
 #include "client/sim/localization_trials.h"
 #include "common/raycast/grid_ray_caster.h"
@@ -38,6 +41,34 @@ TEST(ScanAgreement, CountsTheBeamsWithinTheTolerance) {
   // The same scan seen from elsewhere, turned around, fits far worse.
   EXPECT_LT(scan_agreement(caster, {17, 7, 3.0}, beams, ranges, 0.5), 0.5);
   EXPECT_THROW(scan_agreement(caster, at, beams, std::vector<double>(3, 1.0), 0.5), std::invalid_argument);
+}
+
+// With foreground flags: a beam stopped short counts against the pose unless flagged
+// (a person); flagged ones are left out as before. Real flags from foreground.h: a
+// person 2 m in front of the wall is a narrow run and is flagged; a wall across half the
+// scan that the map does not hold (a look-alike corridor's end) is not.
+TEST(ScanAgreement, WithForegroundFlagsOnlyPeopleMayStopABeamShort) {
+  const Map room = test::room_map();
+  const GridRayCaster caster(room, {0.3, 15.0});
+  const std::vector<double> beams = evenly_spread_angles(131, kPi);
+  const Pose at{10, 3, 0};
+  std::vector<double> ranges(beams.size());
+  caster.cast_scan(at.point(), at.theta, beams, ranges.data());
+  std::vector<double> person = ranges;
+  for (size_t j = 60; j < 64; ++j) person[j] = 1.5;  // four beams about 0.1 m apart at 1.5 m
+  const std::vector<uint8_t> person_flags = foreground_returns(person, beams, 15.0);
+  ASSERT_TRUE(person_flags[61] && person_flags[62]);
+  EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, person, 0.5, &person_flags), 1.0);
+  std::vector<double> wall = ranges;
+  for (size_t j = 0; j < 65; ++j) wall[j] = std::min(wall[j], 0.8 / std::max(0.05, std::sin(std::fabs(beams[j]))));
+  size_t short_beams = 0;
+  for (size_t j = 0; j < beams.size(); ++j) short_beams += wall[j] < ranges[j] - 0.5 ? 1 : 0;
+  ASSERT_GT(short_beams, 40u);
+  const std::vector<uint8_t> wall_flags = foreground_returns(wall, beams, 15.0);
+  EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, wall, 0.5), 1.0);  // without flags: left out
+  EXPECT_LT(scan_agreement(caster, at, beams, wall, 0.5, &wall_flags), 0.7);
+  const std::vector<uint8_t> three(3, 0);
+  EXPECT_THROW(scan_agreement(caster, at, beams, wall, 0.5, &three), std::invalid_argument);
 }
 
 TEST(LostDetector, StaysFoundOnAGoodOrMerelyHarderPlace) {
