@@ -19,13 +19,18 @@
 namespace fleetmap::localization {
 namespace {
 
-TEST(ScanAgreement, CountsTheBeamsWithinTheTolerance) {
+// The room, a laser of 131 beams over 180 degrees at (10, 3), and its noiseless scan.
+struct RoomScan {
   const Map room = test::room_map();
-  const GridRayCaster caster(room, {0.3, 15.0});
+  const GridRayCaster caster{room, {0.3, 15.0}};
   const std::vector<double> beams = evenly_spread_angles(131, kPi);
   const Pose at{10, 3, 0};
-  std::vector<double> ranges(beams.size());
-  caster.cast_scan(at.point(), at.theta, beams, ranges.data());
+  std::vector<double> ranges = std::vector<double>(beams.size());
+  RoomScan() { caster.cast_scan(at.point(), at.theta, beams, ranges.data()); }
+};
+
+TEST(ScanAgreement, CountsTheBeamsWithinTheTolerance) {
+  auto [room, caster, beams, at, ranges] = RoomScan();
   EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, ranges, 0.5), 1.0);
   // Ten beams shortened by 2 m (people in front of the wall) are left out: the map does
   // not hold people. Ten beams 2 m longer than the walls allow disagree.
@@ -48,12 +53,7 @@ TEST(ScanAgreement, CountsTheBeamsWithinTheTolerance) {
 // person 2 m in front of the wall is a narrow run and is flagged; a wall across half the
 // scan that the map does not hold (a look-alike corridor's end) is not.
 TEST(ScanAgreement, WithForegroundFlagsOnlyPeopleMayStopABeamShort) {
-  const Map room = test::room_map();
-  const GridRayCaster caster(room, {0.3, 15.0});
-  const std::vector<double> beams = evenly_spread_angles(131, kPi);
-  const Pose at{10, 3, 0};
-  std::vector<double> ranges(beams.size());
-  caster.cast_scan(at.point(), at.theta, beams, ranges.data());
+  const auto [room, caster, beams, at, ranges] = RoomScan();
   std::vector<double> person = ranges;
   for (size_t j = 60; j < 64; ++j) person[j] = 1.5;  // four beams about 0.1 m apart at 1.5 m
   const std::vector<uint8_t> person_flags = foreground_returns(person, beams, 15.0);
