@@ -1,7 +1,6 @@
 #include "client/localization/ambiguity.h"
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
 #include <cstdint>
 #include <limits>

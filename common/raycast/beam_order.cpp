@@ -20,14 +20,13 @@ const BeamOrder& beam_order(const std::vector<double>& rel) {
   std::iota(order.beam.begin(), order.beam.end(), 0u);
   std::stable_sort(order.beam.begin(), order.beam.end(), [&](uint32_t l, uint32_t r) { return p[l] < p[r]; });
   order.pseudo.resize(n);
-  order.unit.resize(n);
   order.unit_x.assign((n + 3) / 4 * 4, 0.0);
   order.unit_y.assign((n + 3) / 4 * 4, 0.0);
   for (size_t k = 0; k < n; ++k) {
     order.pseudo[k] = p[order.beam[k]];
-    order.unit[k] = ray_direction(rel[order.beam[k]]);
-    order.unit_x[k] = order.unit[k].x;
-    order.unit_y[k] = order.unit[k].y;
+    const Point u = ray_direction(rel[order.beam[k]]);
+    order.unit_x[k] = u.x;
+    order.unit_y[k] = u.y;
   }
   // The largest gap between cyclically consecutive beams; the arc is the rest.
   order.all_around = true;

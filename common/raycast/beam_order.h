@@ -33,8 +33,8 @@ struct BeamOrder {
   std::vector<double> angles;   // the relative angles this was built for
   std::vector<double> pseudo;   // of the relative directions (robot's frame), sorted
   std::vector<uint32_t> beam;   // beam[k]: the beam with the k-th pseudo-angle
-  std::vector<Point> unit;      // unit[k]: ray_direction() of that beam's relative angle
-  // The same by coordinate, for vector loads: n rounded up to a multiple of 4, zeros after.
+  // (unit_x[k], unit_y[k]): ray_direction() of that beam's relative angle, by coordinate
+  // for vector loads; n rounded up to a multiple of 4, zeros after.
   std::vector<double> unit_x, unit_y;
   std::vector<uint32_t> first;  // first[b]: how many pseudo-angles are below b / kBinsPerUnit
   // The smallest arc holding every beam runs counter-clockwise from position arc_first
