@@ -196,9 +196,10 @@ int main(int argc, char** argv) {
                  "the rivals are (ambiguity.h), 0: by the tempered score's margin, for every preset but seed (default: "
                  "the preset's)")
       ->check(CLI::Range(0, 1));
-  app.add_flag("--lost-short-needs-foreground", s.lost.short_needs_foreground,
-               "the lost detector counts a beam stopped short against the pose unless foreground.h flags it (a person; "
-               "lost_detector.h)");
+  app.add_option("--lost-unmapped-walls", s.lost.count_unmapped_walls,
+                 "1: the lost detector counts beams stopped short on a straight piece longer than people against the "
+                 "pose (a wall the map does not hold there; unmapped_walls.h), 0: it leaves every beam stopped short out")
+      ->capture_default_str();
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_option("--short-beyond", s.short_beyond,

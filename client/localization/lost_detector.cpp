@@ -6,24 +6,28 @@
 namespace fleetmap::localization {
 
 double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vector<double>& beams,
-                      const std::vector<double>& ranges, double tolerance, const std::vector<uint8_t>* foreground) {
+                      const std::vector<double>& ranges, const LostDetectorOptions& options) {
   if (ranges.size() != beams.size())
     throw std::invalid_argument("scan_agreement: expected one range per beam (" + std::to_string(beams.size()) +
                                 "), got " + std::to_string(ranges.size()));
-  if (foreground && foreground->size() != beams.size())
-    throw std::invalid_argument("scan_agreement: expected one foreground flag per beam (" +
-                                std::to_string(beams.size()) + "), got " + std::to_string(foreground->size()));
   if (beams.empty()) return 0;
   std::vector<double> cast(beams.size());
   caster.cast_scan(pose.point(), pose.theta, beams, cast.data());
   // A beam stopped short is explained by something the map does not hold (people,
   // clutter: seed 000 eq. 5's uniform term) and says nothing about the pose; of the
   // others, those within the tolerance agree and those that reach past a wall do not.
+  const double tolerance = options.tolerance;
+  std::vector<uint8_t> wall;
+  if (options.count_unmapped_walls) {
+    std::vector<uint8_t> stopped_short(beams.size());
+    for (size_t j = 0; j < beams.size(); ++j) stopped_short[j] = ranges[j] - cast[j] < -tolerance ? 1 : 0;
+    wall = unmapped_wall_returns(ranges, beams, stopped_short, options.unmapped_wall);
+  }
   size_t agree = 0, through = 0;
   for (size_t j = 0; j < beams.size(); ++j) {
     const double d = ranges[j] - cast[j];
     if (std::abs(d) <= tolerance) ++agree;
-    else if (d > 0 || (foreground && !(*foreground)[j])) ++through;
+    else if (d > 0 || (!wall.empty() && wall[j])) ++through;
   }
   if (agree + through == 0) return 1.0;  // every beam blocked: nothing contradicts the pose
   return static_cast<double>(agree) / static_cast<double>(agree + through);

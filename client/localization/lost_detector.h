@@ -6,21 +6,22 @@
 // the weights (Thrun et al. 2005, Augmented MCL), but on a figure that does not depend
 // on the sensor model's scale: the scan's agreement with rays cast from the estimate. A
 // beam stopped short is explained by what the map does not hold (people, clutter: seed
-// 000 eq. 5's uniform term) and is left out; of the others, the share within
-// `tolerance` of the cast range agree, and those that pass through a wall of the map do
-// not. Measured on GDC1 (bench-localization --kidnaps): tracking with 10 people per
+// 000 eq. 5's uniform term) and is left out, unless it lies on a straight wall longer
+// than people (unmapped_walls.h), which the pose should explain; of the others, the
+// share within `tolerance` of the cast range agree, and those that pass through a wall
+// of the map do not. Measured on GDC1 (bench-localization --kidnaps): tracking with 10 people per
 // scan, p5 0.75; kidnapped, median 0.3. The absolute share of matching beams falls to
 // 0.45 in the median with 10 people while tracking, as low as a kidnapped robot's.
 // The slow average learns a place's usual level (glass, doors the map has closed), so
 // only a drop well below it, lasting `hold` updates, says lost.
 //
 //   LostDetector d;
-//   d.update(scan_agreement(caster, estimate.pose, beams, ranges, 0.5));
+//   d.update(scan_agreement(caster, estimate.pose, beams, ranges, d.options()));
 //   if (d.lost()) { report_lost(); filter.init_global(compass); d.reset(); }
-#include <cstdint>
 #include <vector>
 
 #include "client/localization/pose.h"
+#include "client/localization/unmapped_walls.h"
 #include "common/raycast/ray_caster.h"
 
 namespace fleetmap::localization {
@@ -37,21 +38,21 @@ struct LostDetectorOptions {
   double floor = 0.6;
   int hold = 3;
   int warmup = 5;  // updates after a reset before the slow average is trusted
-  // A beam stopped short counts against the pose unless foreground.h flags it (a narrow
-  // run in front of farther returns: a person). Off by default: measured on kidnaps only
-  // (docs/localization.md, "Kidnapping"), not yet on an hour of driving among people.
-  bool short_needs_foreground = false;
+  // A beam stopped short on a straight piece longer than people (unmapped_walls.h) counts
+  // against the pose: a wall the estimate's rays pass, as at the end of a look-alike
+  // corridor (docs/localization.md, "Kidnapping").
+  bool count_unmapped_walls = true;
+  UnmappedWallOptions unmapped_wall;
 };
 
 // Of the beams (relative angles `beams`, readings `ranges`) not stopped short of the ray
-// cast from `pose`, the share within tolerance metres of it, in [0, 1]; 1 when every
-// beam was stopped short. foreground, when given (one flag per beam, foreground.h): a
-// beam stopped short that it does not flag counts as one that passes through a wall (a
-// wall in front that the pose does not explain; a tracking filter that re-locked on a
-// look-alike corridor after a kidnap kept 56 such beams of 131 out of the figure).
+// cast from `pose`, the share within options.tolerance metres of it, in [0, 1]; 1 when
+// every beam was stopped short. With count_unmapped_walls, beams stopped short on a
+// straight piece longer than people count as ones that pass through a wall (a wall in
+// front that the pose does not explain; a tracking filter that re-locked on a look-alike
+// corridor after a kidnap kept 56 such beams of 131 out of the figure).
 double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vector<double>& beams,
-                      const std::vector<double>& ranges, double tolerance,
-                      const std::vector<uint8_t>* foreground = nullptr);
+                      const std::vector<double>& ranges, const LostDetectorOptions& options = {});
 
 class LostDetector {
  public:

@@ -188,6 +188,11 @@ struct KidnapResult {
   std::vector<int> recover_updates;  // per recovery: updates from "lost" to within bounds
   double recover_compute_s = 0;      // computation of the recoveries, all of them
   int false_alarms = 0;              // "lost" before a kidnap, or during the drive without one
+  // Of those, the ones where the tracking filter had lost the robot by itself (its
+  // estimate more than 1 m off when the detector spoke): a true alarm of another cause,
+  // counted apart so that neither hides the other.
+  int alarms_while_off = 0;
+  std::vector<double> alarm_error_m, alarm_error_deg;  // the estimate's error at each false alarm
   double driven_without_kidnap = 0;  // metres of driving in which a "lost" is a false alarm
 };
 

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <memory>
 
-#include "client/localization/foreground.h"
 #include "client/sim/laser_simulator.h"
 #include "client/sim/localization_trials.h"
 #include "common/raycast/grid_ray_caster.h"
@@ -31,44 +30,42 @@ struct RoomScan {
 
 TEST(ScanAgreement, CountsTheBeamsWithinTheTolerance) {
   auto [room, caster, beams, at, ranges] = RoomScan();
-  EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, ranges, 0.5), 1.0);
+  EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, ranges), 1.0);
   // Ten beams shortened by 2 m (people in front of the wall) are left out: the map does
   // not hold people. Ten beams 2 m longer than the walls allow disagree.
   for (size_t j = 0; j < 10; ++j) ranges[j * 13] -= 2.0;
-  EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, ranges, 0.5), 1.0);
+  EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, ranges), 1.0);
   for (size_t j = 0; j < 10; ++j) ranges[j * 13 + 1] += 2.0;
-  EXPECT_NEAR(scan_agreement(caster, at, beams, ranges, 0.5), 111.0 / 121.0, 1e-12);
+  EXPECT_NEAR(scan_agreement(caster, at, beams, ranges), 111.0 / 121.0, 1e-12);
   // Within the tolerance is agreement.
   ranges[5] += 0.4;
-  EXPECT_NEAR(scan_agreement(caster, at, beams, ranges, 0.5), 111.0 / 121.0, 1e-12);
+  EXPECT_NEAR(scan_agreement(caster, at, beams, ranges), 111.0 / 121.0, 1e-12);
   // Every beam blocked right in front of the laser: nothing contradicts the pose.
-  EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, std::vector<double>(beams.size(), 0.2), 0.5), 1.0);
+  EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, std::vector<double>(beams.size(), 0.2)), 1.0);
   // The same scan seen from elsewhere, turned around, fits far worse.
-  EXPECT_LT(scan_agreement(caster, {17, 7, 3.0}, beams, ranges, 0.5), 0.5);
-  EXPECT_THROW(scan_agreement(caster, at, beams, std::vector<double>(3, 1.0), 0.5), std::invalid_argument);
+  EXPECT_LT(scan_agreement(caster, {17, 7, 3.0}, beams, ranges), 0.5);
+  EXPECT_THROW(scan_agreement(caster, at, beams, std::vector<double>(3, 1.0)), std::invalid_argument);
 }
 
-// With foreground flags: a beam stopped short counts against the pose unless flagged
-// (a person); flagged ones are left out as before. Real flags from foreground.h: a
-// person 2 m in front of the wall is a narrow run and is flagged; a wall across half the
-// scan that the map does not hold (a look-alike corridor's end) is not.
-TEST(ScanAgreement, WithForegroundFlagsOnlyPeopleMayStopABeamShort) {
+// By default a beam stopped short on a straight piece longer than people counts against
+// the pose (unmapped_walls.h): a wall 2 m ahead that the map does not hold (the end of a
+// look-alike corridor) does; a person, or the same wall when the option is off, does not.
+TEST(ScanAgreement, AWallTheMapLacksCountsAgainstThePose) {
   const auto [room, caster, beams, at, ranges] = RoomScan();
-  std::vector<double> person = ranges;
-  for (size_t j = 60; j < 64; ++j) person[j] = 1.5;  // four beams about 0.1 m apart at 1.5 m
-  const std::vector<uint8_t> person_flags = foreground_returns(person, beams, 15.0);
-  ASSERT_TRUE(person_flags[61] && person_flags[62]);
-  EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, person, 0.5, &person_flags), 1.0);
   std::vector<double> wall = ranges;
-  for (size_t j = 0; j < 65; ++j) wall[j] = std::min(wall[j], 0.8 / std::max(0.05, std::sin(std::fabs(beams[j]))));
-  size_t short_beams = 0;
-  for (size_t j = 0; j < beams.size(); ++j) short_beams += wall[j] < ranges[j] - 0.5 ? 1 : 0;
-  ASSERT_GT(short_beams, 40u);
-  const std::vector<uint8_t> wall_flags = foreground_returns(wall, beams, 15.0);
-  EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, wall, 0.5), 1.0);  // without flags: left out
-  EXPECT_LT(scan_agreement(caster, at, beams, wall, 0.5, &wall_flags), 0.7);
-  const std::vector<uint8_t> three(3, 0);
-  EXPECT_THROW(scan_agreement(caster, at, beams, wall, 0.5, &three), std::invalid_argument);
+  for (size_t j = 0; j < beams.size(); ++j)
+    if (std::fabs(beams[j]) < 1.0) wall[j] = std::min(wall[j], 2.0 / std::cos(beams[j]));
+  EXPECT_LT(scan_agreement(caster, at, beams, wall), 0.7);
+  LostDetectorOptions off;
+  off.count_unmapped_walls = false;
+  EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, wall, off), 1.0);
+  std::vector<double> person = ranges;
+  // A person is round: their returns bulge towards the laser.
+  for (size_t j = 55; j < 75; ++j) {
+    const double u = (static_cast<double>(j) - 64.5) / 10.0;  // -1 .. 1 across the person
+    person[j] = 1.5 - 0.25 * std::sqrt(std::max(0.0, 1 - u * u));
+  }
+  EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, person), 1.0);
 }
 
 TEST(LostDetector, StaysFoundOnAGoodOrMerelyHarderPlace) {
