@@ -75,8 +75,9 @@ bool within_bounds(const Pose& e, const Pose& truth) {
   return distance(e, truth) < 0.3 && std::fabs(angle_diff(e.theta, truth.theta)) < deg2rad(3.0);
 }
 
-// stop_when_converged: end at the first converged estimate (a recovery trusts it then);
-// otherwise run all max_updates (a trial asks that the estimate stays within).
+// stop_when_converged: end at the first pose the robot would report (converged, and no
+// look-alike place: a recovery trusts it then); otherwise run all max_updates (a trial
+// asks that the estimate stays within).
 GlobalRun run_global_localization(const Map& map, std::shared_ptr<const RayCaster> world,
                                   std::shared_ptr<const GlobalSearch> search, const ParticleFilterOptions& fo,
                                   const TrialSettings& s, const Pose& start, GlobalRunSeeds seeds,
@@ -123,8 +124,16 @@ GlobalRun run_global_localization(const Map& map, std::shared_ptr<const RayCaste
     run.within = within_bounds(e.pose, truth);
     if (run.within && run.first_within < 0) run.first_within = u;
     if (!run.within) run.first_within = -1;  // must stay within to the end
-    if (e.converged && run.converged_at < 0) run.converged_at = u;
-    if (stop_when_converged && e.converged) break;
+    if (stop_when_converged) {
+      // As the robot does (SimRobot::localize): a pose is reported once the cloud has
+      // converged and the verdict finds no look-alike place; until then it looks on.
+      if (e.converged && !pf.awaiting_search() && !pf.ambiguity().ambiguous()) {
+        run.converged_at = u;
+        break;
+      }
+    } else if (e.converged && run.converged_at < 0) {
+      run.converged_at = u;
+    }
   }
   const Ambiguity a = pf.ambiguity();
   run.places = a.places.size();
@@ -412,6 +421,7 @@ KidnapResult run_kidnap_trials(const Map& map, std::shared_ptr<const RayCaster> 
       res.recover_updates.push_back(run.converged_at);
     } else if (run.converged_at > 0) {
       ++res.wrong;
+      res.wrong_error_m.push_back(run.error);
     }
     res.recover_compute_s += seconds_since(t0);
   }
@@ -440,15 +450,19 @@ void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
                "(%.1f %%) in median %.1f s, p95 %.1f s, max %.1f s (goal <= 3 s; a scan every %.2f s), %d undetected but "
                "found again by the tracking filter itself; recovered %d "
                "(%.1f %% of the detected) in median %.1f s, p95 %.1f s of driving, %.2f s of computation each; "
-               "wrong %d; false alarms %d in %.2f h of driving (%.0f m) (goal 0 per hour), of which %d with the "
+               "wrong %d, no pose reported %d; false alarms %d in %.2f h of driving (%.0f m) (goal 0 per hour), of which %d with the "
                "estimate more than 1 m off (the filter had lost the robot); %.0f s\n",
                k.trials, s.laser.people, s.kidnap_after, k.detected, 100.0 * k.detected / std::max(1, k.trials),
                percentile(k.detect_updates, 0.5) * s.scan_period_s, percentile(k.detect_updates, 0.95) * s.scan_period_s,
                k.detect_updates.empty() ? NAN : *std::max_element(k.detect_updates.begin(), k.detect_updates.end()) * s.scan_period_s,
                s.scan_period_s, k.found_by_itself, k.recovered, 100.0 * k.recovered / std::max(1, k.detected),
                percentile(k.recover_updates, 0.5) * s.scan_period_s, percentile(k.recover_updates, 0.95) * s.scan_period_s,
-               k.recover_compute_s / std::max(1, k.detected), k.wrong, k.false_alarms, hours, k.driven_without_kidnap,
+               k.recover_compute_s / std::max(1, k.detected), k.wrong,
+               s.recover_updates > 0 ? k.detected - k.recovered - k.wrong : 0, k.false_alarms, hours, k.driven_without_kidnap,
                k.alarms_while_off, seconds_since(t0));
+  for (size_t i = 0; i < k.wrong_error_m.size(); ++i)
+    std::fprintf(out, "  wrong recovery %zu: the reported pose %.2f m off (out of 0.3 m and 3 deg)\n", i + 1,
+                 k.wrong_error_m[i]);
   for (size_t i = 0; i < k.alarm_error_m.size(); ++i)
     std::fprintf(out, "  false alarm %zu: the estimate %.2f m and %.1f deg off\n", i + 1, k.alarm_error_m[i],
                  k.alarm_error_deg[i]);

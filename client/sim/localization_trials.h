@@ -180,7 +180,8 @@ struct TrackResult {
 };
 
 struct KidnapResult {
-  int trials = 0, detected = 0, recovered = 0, wrong = 0;  // wrong: converged elsewhere
+  int trials = 0, detected = 0, recovered = 0, wrong = 0;  // wrong: reported a pose out of bounds
+  std::vector<double> wrong_error_m;                        // how far, each
   // Not detected within 10 s, but the tracking filter found the robot again by itself
   // (its estimate within 0.3 m and 3 degrees at the end): no harm done.
   int found_by_itself = 0;
