@@ -196,6 +196,11 @@ int main(int argc, char** argv) {
                  "the rivals are (ambiguity.h), 0: by the tempered score's margin, for every preset but seed (default: "
                  "the preset's)")
       ->check(CLI::Range(0, 1));
+  app.add_option("--turn-in-place-sds", s.turn_in_place_sds,
+                 "a step is a turn in place (the look around goes on, its turn registered on the scans) while its "
+                 "translation is below 5 cm plus this many standard deviations of the motion model's translation for "
+                 "its turn, for every preset but seed (0: 5 cm alone; default: the preset's)")
+      ->check(CLI::NonNegativeNumber);
   app.add_flag("--lost-short-needs-foreground", s.lost.short_needs_foreground,
                "the lost detector counts a beam stopped short against the pose unless foreground.h flags it (a person; "
                "lost_detector.h)");

@@ -270,6 +270,45 @@ TEST(ParticleFilter, DeferredLookAroundSearchesOnceAtItsEnd) {
   }
 }
 
+// Odometry reports a few centimetres of translation on a turn in place (its noise grows
+// with the turn); a look around must not end there (ParticleFilterOptions::turn_in_place_sds,
+// docs/localization.md "The search's misses on the campus"): with the option the six 60
+// degree turns, each reported 8 cm ahead, keep their scans for one search at the last; with
+// 5 cm alone the first turn is taken for driving and the filter searches at once.
+TEST(ParticleFilter, ALookAroundsTurnsStayTurnsDespiteOdometrysDrift) {
+  const Map m = test::room_map();
+  const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
+  for (const double sds : {3.0, 0.0}) {
+    LaserSimulator laser(world, {}, 9);
+    ParticleFilterOptions o = ParticleFilterOptions::fast_search();
+    o.particles = 800;
+    o.kld.max_particles = 800;
+    o.seed = 5;
+    o.turn_in_place_sds = sds;
+    ParticleFilter f(m, world, o);
+    Pose truth{6.5, 8.0, -0.4};
+    f.init_global(truth.theta);
+    int searched_at = 0;
+    for (int u = 1; u <= 7; ++u) {
+      if (u > 1) {
+        const Odometry turn{0, 0, deg2rad(60.0)};
+        truth = compose(truth, turn);
+        f.predict({0.08, 0.02 * std::sin(u), turn.dtheta});  // as reported: 8 cm ahead
+      }
+      f.update(laser.scan(truth), truth.theta);
+      if (searched_at == 0 && !f.last_candidates().empty()) searched_at = u;
+    }
+    if (sds > 0) {
+      EXPECT_EQ(searched_at, 7) << "one search, at the last turn";
+      const PoseEstimate e = f.estimate();
+      EXPECT_LT(distance(e.pose, truth), 0.3);
+      EXPECT_LT(std::fabs(angle_diff(e.pose.theta, truth.theta)), deg2rad(3.0));
+    } else {
+      EXPECT_EQ(searched_at, 2) << "without the option the first turn ends the look around";
+    }
+  }
+}
+
 // The ambiguity verdict's residual (AmbiguityOptions::rivals) of the recent scans, each
 // placed from the latest by the stitched odometry. Here the odometry under-reports every
 // 0.5 m step by 4 % and each 5 degree turn by 0.3 degrees, so the earlier scans sit up
