@@ -201,6 +201,10 @@ int main(int argc, char** argv) {
                  "translation is below 5 cm plus this many standard deviations of the motion model's translation for "
                  "its turn, for every preset but seed (0: 5 cm alone; default: the preset's)")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--roughening-max-xy", s.roughening_max_xy,
+                 "metres: the cap of roughening's jitter in x and y (0.2: the cap before fast's 0.05), for every preset "
+                 "but seed (default: the preset's)")
+      ->check(CLI::NonNegativeNumber);
   app.add_flag("--lost-short-needs-foreground", s.lost.short_needs_foreground,
                "the lost detector counts a beam stopped short against the pose unless foreground.h flags it (a person; "
                "lost_detector.h)");

@@ -90,6 +90,9 @@ struct ParticleFilterOptions {
   double roughening = 0.2;            // K; 0 disables
   double roughening_max_xy = 0.2;     // metres: caps of the jitter's standard deviation,
   double roughening_max_theta = deg2rad(1.0);  // so far-apart hypotheses do not blur
+  // (A cloud of places far apart always jitters by the caps, at each resampling: with
+  // tempering several times per scan; fast_search() caps xy at 0.05 m, docs/localization.md,
+  // "The search's misses on the campus (2026-12-05)".)
   bool global_search = false;         // the global phase searches (above)
   GlobalSearchOptions search;         // its likelihood field; margin and hL set from laser
   size_t search_candidates = 2000;    // places the likelihood field keeps (M)
