@@ -202,8 +202,8 @@ int main(int argc, char** argv) {
                  "its turn, for every preset but seed (0: 5 cm alone; default: the preset's)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--roughening-max-xy", s.roughening_max_xy,
-                 "metres: the cap of roughening's jitter in x and y (0.2: the cap before fast's 0.05), for every preset "
-                 "but seed (default: the preset's)")
+                 "metres: the cap of roughening's jitter in x and y, for every preset but seed (default: the preset's, "
+                 "0.2)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--lost-short-needs-foreground", s.lost.short_needs_foreground,
                "the lost detector counts a beam stopped short against the pose unless foreground.h flags it (a person; "

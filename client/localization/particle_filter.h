@@ -91,8 +91,9 @@ struct ParticleFilterOptions {
   double roughening_max_xy = 0.2;     // metres: caps of the jitter's standard deviation,
   double roughening_max_theta = deg2rad(1.0);  // so far-apart hypotheses do not blur
   // (A cloud of places far apart always jitters by the caps, at each resampling: with
-  // tempering several times per scan; fast_search() caps xy at 0.05 m, docs/localization.md,
-  // "The search's misses on the campus (2026-12-05)".)
+  // tempering several times per scan. A cap of 0.05 m kept the truth's sharp place on two
+  // campus misses but not on a fresh seed: docs/localization.md, "The search's misses on
+  // the campus (2026-12-05)".)
   bool global_search = false;         // the global phase searches (above)
   GlobalSearchOptions search;         // its likelihood field; margin and hL set from laser
   size_t search_candidates = 2000;    // places the likelihood field keeps (M)
@@ -143,10 +144,11 @@ struct ParticleFilterOptions {
   // Besides, a step is a turn in place while its translation stays below turn_in_place plus
   // this many standard deviations of the translation the motion model gives its turn
   // (sqrt(alpha4) |dtheta|): odometry reports a few centimetres on a turn in place (the
-  // simulated robot's 2.3 cm per 60 degrees, one turn in 30 over 5 cm), and a look around
-  // taken for driving ends at that turn, searched on the scans so far, its later turns
-  // left to the motion model (docs/localization.md, "The search's misses on the campus").
-  // 0: turn_in_place alone.
+  // simulated robot's 2.3 cm per 60 degrees: one turn in 60 over 5 cm ahead), and a look
+  // around taken for driving ends at that turn, searched on the scans so far, its later
+  // turns left to the motion model (docs/localization.md, "The search's misses on the
+  // campus": 3 saved one miss of seed 5151 and changed one trial of 200 on a fresh seed,
+  // for the worse; off in every preset). 0: turn_in_place alone.
   double turn_in_place_sds = 0;
   double search_sd_xy = 0.1;          // metres: spread of a cluster (the field's cell)
   double search_sd_theta = deg2rad(0.7);  // radians: about the search's heading step

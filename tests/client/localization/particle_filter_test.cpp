@@ -311,11 +311,12 @@ TEST(ParticleFilter, ALookAroundsTurnsStayTurnsDespiteOdometrysDrift) {
 }
 
 // A cloud of places far apart (a searched cloud) is spread over metres, and roughening
-// jitters it by its cap at each resampling, several per scan while tempering: with
-// fast_search's cap (0.05 m) each place stays as sharp as the scans make it; with the
-// cap before (0.2 m) the place the robot is at blurred, and a wrong place tolerant of the
-// blur won the next scans (docs/localization.md, "The search's misses on the campus").
-// Two identical rooms 12 m apart keep the cloud two places; the robot stands in room A.
+// jitters it by its cap at each resampling, several per scan while tempering: with a cap
+// of 0.05 m (ParticleFilterOptions::roughening_max_xy) each place stays as sharp as the
+// scans make it; with the default 0.2 m the place the robot is at blurs (on the campus a
+// wrong place tolerant of the blur then won the next scans: docs/localization.md, "The
+// search's misses on the campus"). Two identical rooms 12 m apart keep the cloud two
+// places; the robot stands in room A.
 TEST(ParticleFilter, PlacesFarApartStaySharpUnderRoughening) {
   Map m;
   m.border = Border::from_rect({0, 0, 20, 6});
@@ -341,7 +342,7 @@ TEST(ParticleFilter, PlacesFarApartStaySharpUnderRoughening) {
     o.particles = 400;
     o.kld.max_particles = 400;
     o.seed = 31;
-    if (cap > 0) o.roughening_max_xy = cap;
+    o.roughening_max_xy = cap;
     ParticleFilter f(m, world, o);
     LaserSimulator laser(world, {}, 32);
     std::mt19937_64 rng(33);
@@ -365,9 +366,9 @@ TEST(ParticleFilter, PlacesFarApartStaySharpUnderRoughening) {
     EXPECT_GT(in_b, 0.1) << "the twin room keeps its share: the cloud stays two places";
     return std::sqrt(sum / w);
   };
-  const double sharp = rms_in_room_a(0), blurred = rms_in_room_a(0.2);
-  EXPECT_LT(sharp, 0.1) << "fast_search's cap";
-  EXPECT_GT(blurred, 1.5 * sharp) << "the cap before blurs the place the robot is at";
+  const double sharp = rms_in_room_a(0.05), blurred = rms_in_room_a(0.2);
+  EXPECT_LT(sharp, 0.1) << "a cap of 0.05 m";
+  EXPECT_GT(blurred, 1.5 * sharp) << "the default cap blurs the place the robot is at";
 }
 
 // The ambiguity verdict's residual (AmbiguityOptions::rivals) of the recent scans, each
