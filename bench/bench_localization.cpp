@@ -196,6 +196,15 @@ int main(int argc, char** argv) {
                  "the rivals are (ambiguity.h), 0: by the tempered score's margin, for every preset but seed (default: "
                  "the preset's)")
       ->check(CLI::Range(0, 1));
+  app.add_option("--turn-in-place-sds", s.turn_in_place_sds,
+                 "a step is a turn in place (the look around goes on, its turn registered on the scans) while its "
+                 "translation is below 5 cm plus this many standard deviations of the motion model's translation for "
+                 "its turn, for every preset but seed (0: 5 cm alone; default: the preset's)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--roughening-max-xy", s.roughening_max_xy,
+                 "metres: the cap of roughening's jitter in x and y, for every preset but seed (default: the preset's, "
+                 "0.2)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--lost-unmapped-walls", s.lost.count_unmapped_walls,
                  "1: the lost detector counts beams stopped short on a straight piece longer than people against the "
                  "pose (a wall the map does not hold there; unmapped_walls.h), 0: it leaves every beam stopped short out")

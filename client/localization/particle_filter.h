@@ -90,6 +90,10 @@ struct ParticleFilterOptions {
   double roughening = 0.2;            // K; 0 disables
   double roughening_max_xy = 0.2;     // metres: caps of the jitter's standard deviation,
   double roughening_max_theta = deg2rad(1.0);  // so far-apart hypotheses do not blur
+  // (A cloud of places far apart always jitters by the caps, at each resampling: with
+  // tempering several times per scan. A cap of 0.05 m kept the truth's sharp place on two
+  // campus misses but not on a fresh seed: docs/localization.md, "The search's misses on
+  // the campus (2026-12-05)".)
   bool global_search = false;         // the global phase searches (above)
   GlobalSearchOptions search;         // its likelihood field; margin and hL set from laser
   size_t search_candidates = 2000;    // places the likelihood field keeps (M)
@@ -137,6 +141,15 @@ struct ParticleFilterOptions {
   bool search_short_only_foreground = false;
   ForegroundOptions foreground;
   double turn_in_place = 0.05;        // metres: below, a step's turn comes from its scans
+  // Besides, a step is a turn in place while its translation stays below turn_in_place plus
+  // this many standard deviations of the translation the motion model gives its turn
+  // (sqrt(alpha4) |dtheta|): odometry reports a few centimetres on a turn in place (the
+  // simulated robot's 2.3 cm per 60 degrees: one turn in 60 over 5 cm ahead), and a look
+  // around taken for driving ends at that turn, searched on the scans so far, its later
+  // turns left to the motion model (docs/localization.md, "The search's misses on the
+  // campus": 3 saved one miss of seed 5151 and changed one trial of 200 on a fresh seed,
+  // for the worse; off in every preset). 0: turn_in_place alone.
+  double turn_in_place_sds = 0;
   double search_sd_xy = 0.1;          // metres: spread of a cluster (the field's cell)
   double search_sd_theta = deg2rad(0.7);  // radians: about the search's heading step
   bool adaptive = false;              // KLD sampling instead of a fixed NP
@@ -288,6 +301,8 @@ class ParticleFilter {
   // turn corrected by the compass readings and, turning in place, by the scans.
   struct Scan;
   Odometry stitching_step(const Scan& before, const Scan& after) const;
+  // Whether a step's odometry is a turn in place (turn_in_place, turn_in_place_sds).
+  bool turned_in_place(const Odometry& u) const;
   // Scans (history_ or recent_) stitched into the latest one's frame, at most max_points.
   StitchedScan stitch(const std::vector<Scan>& scans, size_t max_points) const;
   // Weights from log-likelihoods (tempered), resampling and roughening when due; returns

@@ -90,6 +90,10 @@ struct TrialSettings {
   int register_scans = -1;
   // AmbiguityOptions::candidates_by_residual: 1 on, 0 off, negative: the preset's.
   int candidates_by_residual = -1;
+  // ParticleFilterOptions::turn_in_place_sds (0: turn_in_place alone; negative: the preset's).
+  double turn_in_place_sds = -1;
+  // ParticleFilterOptions::roughening_max_xy (metres; negative: the preset's).
+  double roughening_max_xy = -1;
   // After each global trial whose estimate ends out of bounds: whom the scans favour, the
   // truth or the estimate (GlobalTrial::truth_fit), to tell the model's failures (no
   // filter on it could pick the truth) from the filter's (it lost a better place).

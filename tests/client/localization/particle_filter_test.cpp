@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <memory>
+#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -268,6 +269,106 @@ TEST(ParticleFilter, DeferredLookAroundSearchesOnceAtItsEnd) {
     EXPECT_LT(distance(e.pose, truth), 0.3) << turns << " turns";
     EXPECT_LT(std::fabs(angle_diff(e.pose.theta, truth.theta)), deg2rad(3.0)) << turns << " turns";
   }
+}
+
+// Odometry reports a few centimetres of translation on a turn in place (its noise grows
+// with the turn); a look around must not end there (ParticleFilterOptions::turn_in_place_sds,
+// docs/localization.md "The search's misses on the campus"): with the option the six 60
+// degree turns, each reported 8 cm ahead, keep their scans for one search at the last; with
+// 5 cm alone the first turn is taken for driving and the filter searches at once.
+TEST(ParticleFilter, ALookAroundsTurnsStayTurnsDespiteOdometrysDrift) {
+  const Map m = test::room_map();
+  const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
+  for (const double sds : {3.0, 0.0}) {
+    LaserSimulator laser(world, {}, 9);
+    ParticleFilterOptions o = ParticleFilterOptions::fast_search();
+    o.particles = 800;
+    o.kld.max_particles = 800;
+    o.seed = 5;
+    o.turn_in_place_sds = sds;
+    ParticleFilter f(m, world, o);
+    Pose truth{6.5, 8.0, -0.4};
+    f.init_global(truth.theta);
+    int searched_at = 0;
+    for (int u = 1; u <= 7; ++u) {
+      if (u > 1) {
+        const Odometry turn{0, 0, deg2rad(60.0)};
+        truth = compose(truth, turn);
+        f.predict({0.08, 0.02 * std::sin(u), turn.dtheta});  // as reported: 8 cm ahead
+      }
+      f.update(laser.scan(truth), truth.theta);
+      if (searched_at == 0 && !f.last_candidates().empty()) searched_at = u;
+    }
+    if (sds > 0) {
+      EXPECT_EQ(searched_at, 7) << "one search, at the last turn";
+      const PoseEstimate e = f.estimate();
+      EXPECT_LT(distance(e.pose, truth), 0.3);
+      EXPECT_LT(std::fabs(angle_diff(e.pose.theta, truth.theta)), deg2rad(3.0));
+    } else {
+      EXPECT_EQ(searched_at, 2) << "without the option the first turn ends the look around";
+    }
+  }
+}
+
+// A cloud of places far apart (a searched cloud) is spread over metres, and roughening
+// jitters it by its cap at each resampling, several per scan while tempering: with a cap
+// of 0.05 m (ParticleFilterOptions::roughening_max_xy) each place stays as sharp as the
+// scans make it; with the default 0.2 m the place the robot is at blurs (on the campus a
+// wrong place tolerant of the blur then won the next scans: docs/localization.md, "The
+// search's misses on the campus"). Two identical rooms 12 m apart keep the cloud two
+// places; the robot stands in room A.
+TEST(ParticleFilter, PlacesFarApartStaySharpUnderRoughening) {
+  Map m;
+  m.border = Border::from_rect({0, 0, 20, 6});
+  int id = 1;
+  const auto chain = [&](std::vector<Point> pts, double ox) {
+    Obstacle o;
+    o.id = id++;
+    o.type = ShapeType::OpenPolygon;
+    for (size_t i = 1; i < pts.size(); ++i)
+      o.segments.push_back(test::wall({pts[i - 1].x + ox, pts[i - 1].y}, {pts[i].x + ox, pts[i].y}));
+    m.obstacles.push_back(o);
+  };
+  for (const double ox : {0.0, 12.0}) {
+    chain({{0, 0}, {8, 0}, {8, 6}, {0, 6}, {0, 0}}, ox);
+    chain({{2, 1}, {2, 3}, {4, 3}}, ox);
+    chain({{6, 4}, {7, 6}}, ox);
+  }
+  m.compute_bounds();
+  const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
+  const Pose truth{5.5, 1.8, 2.4};
+  const auto rms_in_room_a = [&](double cap) {
+    ParticleFilterOptions o = ParticleFilterOptions::fast_search();
+    o.particles = 400;
+    o.kld.max_particles = 400;
+    o.seed = 31;
+    o.roughening_max_xy = cap;
+    ParticleFilter f(m, world, o);
+    LaserSimulator laser(world, {}, 32);
+    std::mt19937_64 rng(33);
+    std::normal_distribution<double> n01(0.0, 1.0);
+    std::vector<Pose> poses;
+    for (int i = 0; i < 400; ++i) {  // as a search leaves them: 0.1 m and 0.7 degrees around each place
+      const double ox = i % 2 ? 12.0 : 0.0;
+      poses.push_back({truth.x + ox + 0.1 * n01(rng), truth.y + 0.1 * n01(rng), truth.theta + deg2rad(0.7) * n01(rng)});
+    }
+    f.set_particles(poses, std::vector<double>(poses.size(), 1.0));
+    for (int u = 0; u < 3; ++u) f.update(laser.scan(truth), truth.theta);  // standing still
+    double sum = 0, w = 0, in_b = 0;
+    for (size_t i = 0; i < f.poses().size(); ++i) {
+      if (f.poses()[i].x > 10) {
+        in_b += f.weights()[i];
+        continue;
+      }
+      sum += f.weights()[i] * std::pow(distance(f.poses()[i], truth), 2);
+      w += f.weights()[i];
+    }
+    EXPECT_GT(in_b, 0.1) << "the twin room keeps its share: the cloud stays two places";
+    return std::sqrt(sum / w);
+  };
+  const double sharp = rms_in_room_a(0.05), blurred = rms_in_room_a(0.2);
+  EXPECT_LT(sharp, 0.1) << "a cap of 0.05 m";
+  EXPECT_GT(blurred, 1.5 * sharp) << "the default cap blurs the place the robot is at";
 }
 
 // The ambiguity verdict's residual (AmbiguityOptions::rivals) of the recent scans, each
