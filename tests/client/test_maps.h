@@ -34,4 +34,29 @@ inline Map room_map() {
   return m;
 }
 
+// Two closed 8 m x 6 m rooms, 4 m apart along x; each holds an L-shaped wall and a short
+// one. `same`: room B is room A moved by 12 m (a perfect look-alike); otherwise B's short
+// wall is elsewhere.
+inline Map two_rooms(bool same) {
+  Map m;
+  m.border = Border::from_rect({0, 0, 20, 6});
+  int id = 1;
+  auto chain = [&](std::vector<Point> pts, double ox) {
+    Obstacle o;
+    o.id = id++;
+    o.type = ShapeType::OpenPolygon;
+    for (size_t i = 1; i < pts.size(); ++i)
+      o.segments.push_back(wall({pts[i - 1].x + ox, pts[i - 1].y}, {pts[i].x + ox, pts[i].y}));
+    m.obstacles.push_back(o);
+  };
+  for (double ox : {0.0, 12.0}) {
+    chain({{0, 0}, {8, 0}, {8, 6}, {0, 6}, {0, 0}}, ox);
+    chain({{2, 1}, {2, 3}, {4, 3}}, ox);
+    if (same || ox == 0) chain({{6, 4}, {7, 6}}, ox);
+    else chain({{1, 4}, {2, 6}}, ox);
+  }
+  m.compute_bounds();
+  return m;
+}
+
 }  // namespace fleetmap::localization::test

@@ -283,30 +283,6 @@ TEST(AmbiguityByLikelihood, ADiffuseCloudIsAmbiguousWhateverTheScores) {
   EXPECT_TRUE(find_ambiguity(p, w, {}, [](const Pose& q) { return q.x < 3 ? 0.0 : -5.0; }).ambiguous());
 }
 
-// Two closed 8 m x 6 m rooms, 4 m apart along x; each holds an L-shaped wall and a short
-// one. `same`: room B is room A moved by 12 m; otherwise B's short wall is elsewhere.
-Map two_rooms(bool same) {
-  Map m;
-  m.border = Border::from_rect({0, 0, 20, 6});
-  int id = 1;
-  auto chain = [&](std::vector<Point> pts, double ox) {
-    Obstacle o;
-    o.id = id++;
-    o.type = ShapeType::OpenPolygon;
-    for (size_t i = 1; i < pts.size(); ++i)
-      o.segments.push_back(test::wall({pts[i - 1].x + ox, pts[i - 1].y}, {pts[i].x + ox, pts[i].y}));
-    m.obstacles.push_back(o);
-  };
-  for (double ox : {0.0, 12.0}) {
-    chain({{0, 0}, {8, 0}, {8, 6}, {0, 6}, {0, 0}}, ox);
-    chain({{2, 1}, {2, 3}, {4, 3}}, ox);
-    if (same || ox == 0) chain({{6, 4}, {7, 6}}, ox);
-    else chain({{1, 4}, {2, 6}}, ox);
-  }
-  m.compute_bounds();
-  return m;
-}
-
 // Global localization (robust preset, uniform cloud, compass) in room A for 8 updates;
 // settle_after: ParticleFilterOptions::settle_after.
 std::unique_ptr<ParticleFilter> localize_in_room_a(const Map& m, Pose& truth, size_t settle_after = 0) {
@@ -336,7 +312,7 @@ std::unique_ptr<ParticleFilter> localize_in_room_a(const Map& m, Pose& truth, si
 // true relative pose wins each scan), so "comparable" is a tenth, not a half.
 TEST(Ambiguity, IdenticalRoomsAreAmbiguous) {
   Pose truth;
-  const Ambiguity a = localize_in_room_a(two_rooms(true), truth)->ambiguity();
+  const Ambiguity a = localize_in_room_a(test::two_rooms(true), truth)->ambiguity();
   ASSERT_TRUE(a.ambiguous());
   // The two places are the truth and its copy in room B, not two lumps of one room.
   bool at_truth = false, at_copy = false;
@@ -352,7 +328,7 @@ TEST(Ambiguity, IdenticalRoomsAreAmbiguous) {
 // each at the truth's pose in it, and the verdict says so.
 TEST(Ambiguity, SettlingKeepsIdenticalRoomsBoth) {
   Pose truth;
-  const auto f = localize_in_room_a(two_rooms(true), truth, 8);
+  const auto f = localize_in_room_a(test::two_rooms(true), truth, 8);
   const Ambiguity a = f->ambiguity();
   ASSERT_TRUE(a.ambiguous());
   bool at_truth = false, at_copy = false;
@@ -369,7 +345,7 @@ TEST(Ambiguity, SettlingKeepsIdenticalRoomsBoth) {
 // a cloud already converged on it.
 TEST(Ambiguity, SettlingLeavesOnePlaceWhereRoomsDiffer) {
   Pose truth;
-  const auto f = localize_in_room_a(two_rooms(false), truth, 8);
+  const auto f = localize_in_room_a(test::two_rooms(false), truth, 8);
   const Ambiguity a = f->ambiguity();
   EXPECT_FALSE(a.ambiguous());
   const PoseEstimate e = f->estimate();
@@ -380,7 +356,7 @@ TEST(Ambiguity, SettlingLeavesOnePlaceWhereRoomsDiffer) {
 
 TEST(Ambiguity, RoomsThatDifferAreNot) {
   Pose truth;
-  const Ambiguity a = localize_in_room_a(two_rooms(false), truth)->ambiguity();
+  const Ambiguity a = localize_in_room_a(test::two_rooms(false), truth)->ambiguity();
   EXPECT_FALSE(a.ambiguous());
   ASSERT_FALSE(a.places.empty());
   EXPECT_LT(distance(a.places[0], truth), 0.3);
@@ -392,7 +368,7 @@ TEST(Ambiguity, RoomsThatDifferAreNot) {
 // true one.
 TEST(Ambiguity, AnEvenSplitBetweenRoomsThatDifferIsNot) {
   Pose truth;
-  const auto f = localize_in_room_a(two_rooms(false), truth);
+  const auto f = localize_in_room_a(test::two_rooms(false), truth);
   const Pose copy{truth.x + 12, truth.y, truth.theta};
   const auto split = [&](double at_truth) {
     std::vector<Pose> p;

@@ -223,6 +223,15 @@ TEST(ParticleFilter, SettlingConvergesAtItsUpdate) {
   }
 }
 
+// The fast preset with 800 particles, seeded: the look-around tests on the room.
+ParticleFilterOptions small_fast() {
+  ParticleFilterOptions o = ParticleFilterOptions::fast_search();
+  o.particles = 800;
+  o.kld.max_particles = 800;
+  o.seed = 5;
+  return o;
+}
+
 // defer_look_around: the turns in place only collect scans; the last turn (the 7th scan
 // with look_around_searches 6), or the first step driven, searches once on all of them.
 // Searching at every turn (or never) would show candidates before the end, or none.
@@ -231,11 +240,7 @@ TEST(ParticleFilter, DeferredLookAroundSearchesOnceAtItsEnd) {
   const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
   for (const int turns : {6, 2}) {
     LaserSimulator laser(world, {}, 9);
-    ParticleFilterOptions o = ParticleFilterOptions::fast_search();
-    o.particles = 800;
-    o.kld.max_particles = 800;
-    o.seed = 5;
-    ParticleFilter f(m, world, o);
+    ParticleFilter f(m, world, small_fast());
     Pose truth{6.5, 8.0, -0.4};
     f.init_global(truth.theta);
     const std::vector<double> before = f.weights();
@@ -281,10 +286,7 @@ TEST(ParticleFilter, ALookAroundsTurnsStayTurnsDespiteOdometrysDrift) {
   const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
   for (const double sds : {3.0, 0.0}) {
     LaserSimulator laser(world, {}, 9);
-    ParticleFilterOptions o = ParticleFilterOptions::fast_search();
-    o.particles = 800;
-    o.kld.max_particles = 800;
-    o.seed = 5;
+    ParticleFilterOptions o = small_fast();
     o.turn_in_place_sds = sds;
     ParticleFilter f(m, world, o);
     Pose truth{6.5, 8.0, -0.4};
@@ -318,23 +320,7 @@ TEST(ParticleFilter, ALookAroundsTurnsStayTurnsDespiteOdometrysDrift) {
 // search's misses on the campus"). Two identical rooms 12 m apart keep the cloud two
 // places; the robot stands in room A.
 TEST(ParticleFilter, PlacesFarApartStaySharpUnderRoughening) {
-  Map m;
-  m.border = Border::from_rect({0, 0, 20, 6});
-  int id = 1;
-  const auto chain = [&](std::vector<Point> pts, double ox) {
-    Obstacle o;
-    o.id = id++;
-    o.type = ShapeType::OpenPolygon;
-    for (size_t i = 1; i < pts.size(); ++i)
-      o.segments.push_back(test::wall({pts[i - 1].x + ox, pts[i - 1].y}, {pts[i].x + ox, pts[i].y}));
-    m.obstacles.push_back(o);
-  };
-  for (const double ox : {0.0, 12.0}) {
-    chain({{0, 0}, {8, 0}, {8, 6}, {0, 6}, {0, 0}}, ox);
-    chain({{2, 1}, {2, 3}, {4, 3}}, ox);
-    chain({{6, 4}, {7, 6}}, ox);
-  }
-  m.compute_bounds();
+  const Map m = test::two_rooms(true);
   const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
   const Pose truth{5.5, 1.8, 2.4};
   const auto rms_in_room_a = [&](double cap) {
