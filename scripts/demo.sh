@@ -79,6 +79,8 @@ step "three robots with their own database accounts, on GDC1"
 mkdir -p "$FLEETMAP_HOME/robots"
 # name, true start pose (x y theta), goal: all in the long corridor of the upper wing
 ROBOTS=("r1 -24 8.6 0.0 28 8.8" "r2 30 8.8 3.14 -8 8.5" "r3 -5 8.5 0.0 20 8.7")
+# A previous run's campus robot (below) would show in the live status as silent ("lost").
+"$FM" robot remove c1 >/dev/null 2>&1 || true
 for spec in "${ROBOTS[@]}"; do
   read -r name x y th gx gy <<<"$spec"
   "$FM" robot remove "$name" >/dev/null 2>&1 || true
