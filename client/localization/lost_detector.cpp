@@ -16,18 +16,20 @@ double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vect
   // A beam stopped short is explained by something the map does not hold (people,
   // clutter: seed 000 eq. 5's uniform term) and says nothing about the pose; of the
   // others, those within the tolerance agree and those that reach past a wall do not.
+  // Unless the beams stopped short make a straight wall (unmapped_walls.h): the pose
+  // should explain that, and they count as passing through.
   const double tolerance = options.tolerance;
-  std::vector<uint8_t> wall;
-  if (options.count_unmapped_walls) {
-    std::vector<uint8_t> stopped_short(beams.size());
-    for (size_t j = 0; j < beams.size(); ++j) stopped_short[j] = ranges[j] - cast[j] < -tolerance ? 1 : 0;
-    wall = unmapped_wall_returns(ranges, beams, stopped_short, options.unmapped_wall);
-  }
+  std::vector<uint8_t> stopped_short(beams.size());
+  for (size_t j = 0; j < beams.size(); ++j) stopped_short[j] = ranges[j] - cast[j] < -tolerance ? 1 : 0;
+  const std::vector<uint8_t> wall = options.count_unmapped_walls
+                                        ? unmapped_wall_returns(ranges, beams, stopped_short, options.unmapped_wall)
+                                        : std::vector<uint8_t>(beams.size(), 0);
   size_t agree = 0, through = 0;
   for (size_t j = 0; j < beams.size(); ++j) {
     const double d = ranges[j] - cast[j];
-    if (std::abs(d) <= tolerance) ++agree;
-    else if (d > 0 || (!wall.empty() && wall[j])) ++through;
+    if (stopped_short[j]) through += wall[j];
+    else if (std::abs(d) <= tolerance) ++agree;
+    else if (d > 0) ++through;
   }
   if (agree + through == 0) return 1.0;  // every beam blocked: nothing contradicts the pose
   return static_cast<double>(agree) / static_cast<double>(agree + through);

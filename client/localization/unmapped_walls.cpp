@@ -62,12 +62,13 @@ void mark_straight_pieces(const std::vector<Point>& points, const std::vector<si
     ++outliers;
   }
   if (outliers == 0 || (lone && outliers * 10 <= last - first + 1)) {
-    size_t lo = last + 1, hi = first, n = 0;
+    std::vector<size_t> wall;  // the beams on the line that meet it head on
     for (size_t k = first; k <= last; ++k)
-      if (!out_of_line(k) && meets_head_on(points[k], a, b, o)) lo = std::min(lo, k), hi = std::max(hi, k), ++n;
-    if (static_cast<int>(n) < o.min_beams || distance(points[lo], points[hi]) < o.min_length) return;
-    for (size_t k = first; k <= last; ++k)
-      if (!out_of_line(k) && meets_head_on(points[k], a, b, o)) out[beam[k]] = 1;
+      if (!out_of_line(k) && meets_head_on(points[k], a, b, o)) wall.push_back(k);
+    if (wall.empty() || static_cast<int>(wall.size()) < o.min_beams ||
+        distance(points[wall.front()], points[wall.back()]) < o.min_length)
+      return;
+    for (size_t k : wall) out[beam[k]] = 1;
     return;
   }
   // Split at the worst point; at an end, drop it.

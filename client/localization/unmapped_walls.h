@@ -24,7 +24,7 @@ namespace fleetmap::localization {
 
 struct UnmappedWallOptions {
   double min_length = 1.5;   // metres between a piece's ends: wider than two people side by side
-  double straightness = 0.15;  // metres a range may be off the chord, along its beam: 2 sigma of the laser's noise
+  double straightness = 0.15;  // metres a range may be off the chord, along its beam: 3 sigma of the laser's noise
   double max_gap = 0.5;      // metres between consecutive end points of one run
   int min_beams = 8;
   // Radians between a beam and the piece's normal: beams that meet it at a more glancing
