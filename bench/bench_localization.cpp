@@ -205,6 +205,10 @@ int main(int argc, char** argv) {
                  "metres: the cap of roughening's jitter in x and y, for every preset but seed (default: the preset's, "
                  "0.2)")
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--roughening-stage-decay", s.roughening_stage_decay,
+                 "roughening's jitter at a scan's s-th annealing stage is the caps times this to the power s, for every "
+                 "preset but seed (1: the same at every stage; default: the preset's)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--lost-unmapped-walls", s.lost.count_unmapped_walls,
                  "1: the lost detector counts beams stopped short on a straight piece longer than people against the "
                  "pose (a wall the map does not hold there; unmapped_walls.h), 0: it leaves every beam stopped short out")

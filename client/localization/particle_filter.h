@@ -94,6 +94,12 @@ struct ParticleFilterOptions {
   // tempering several times per scan. A cap of 0.05 m kept the truth's sharp place on two
   // campus misses but not on a fresh seed: docs/localization.md, "The search's misses on
   // the campus (2026-12-05)".)
+  // Annealing's diffusion shrinks layer by layer (Deutscher et al. 2000): a scan's s-th
+  // stage (from 0) jitters by the caps above times roughening_stage_decay^s. With 1, a
+  // cloud of places far apart walks about sqrt(stages) x 0.2 m per scan, and a sharp,
+  // correct place loses to a flat wrong one (docs/localization.md, "Annealing's
+  // diffusion shrinking by stage"; 0.7 in fast_search).
+  double roughening_stage_decay = 1;
   bool global_search = false;         // the global phase searches (above)
   GlobalSearchOptions search;         // its likelihood field; margin and hL set from laser
   size_t search_candidates = 2000;    // places the likelihood field keeps (M)
@@ -280,7 +286,7 @@ class ParticleFilter {
   double effective_sample_size() const;  // of the normalized weights
   void normalize_weights();
   void resample();
-  void roughen();
+  void roughen(double factor = 1);
   // The global phase's cloud from a search on the scans so far; false (cloud kept) when
   // they hit nothing.
   bool reseed_from_search(double compass);
@@ -307,7 +313,7 @@ class ParticleFilter {
   StitchedScan stitch(const std::vector<Scan>& scans, size_t max_points) const;
   // Weights from log-likelihoods (tempered), resampling and roughening when due; returns
   // the phi applied, at most `most`.
-  double weigh(double most);
+  double weigh(double most, double roughening = 1);
 
   ParticleFilterOptions options_;
   std::vector<double> beams_;

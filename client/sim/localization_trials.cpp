@@ -541,6 +541,7 @@ ParticleFilterOptions trial_filter(const TrialSettings& base, const std::string&
   if (base.candidates_by_residual >= 0) f.ambiguity.candidates_by_residual = base.candidates_by_residual > 0;
   if (base.turn_in_place_sds >= 0) f.turn_in_place_sds = base.turn_in_place_sds;
   if (base.roughening_max_xy >= 0) f.roughening_max_xy = base.roughening_max_xy;
+  if (base.roughening_stage_decay >= 0) f.roughening_stage_decay = base.roughening_stage_decay;
   return f;
 }
 

@@ -94,6 +94,8 @@ struct TrialSettings {
   double turn_in_place_sds = -1;
   // ParticleFilterOptions::roughening_max_xy (metres; negative: the preset's).
   double roughening_max_xy = -1;
+  // ParticleFilterOptions::roughening_stage_decay (negative: the preset's).
+  double roughening_stage_decay = -1;
   // After each global trial whose estimate ends out of bounds: whom the scans favour, the
   // truth or the estimate (GlobalTrial::truth_fit), to tell the model's failures (no
   // filter on it could pick the truth) from the filter's (it lost a better place).

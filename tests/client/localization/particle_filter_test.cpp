@@ -319,42 +319,62 @@ TEST(ParticleFilter, ALookAroundsTurnsStayTurnsDespiteOdometrysDrift) {
 // wrong place tolerant of the blur then won the next scans: docs/localization.md, "The
 // search's misses on the campus"). Two identical rooms 12 m apart keep the cloud two
 // places; the robot stands in room A.
-TEST(ParticleFilter, PlacesFarApartStaySharpUnderRoughening) {
+// A cloud split between two identical rooms, as a search leaves it (0.1 m and 0.7
+// degrees around each place), the robot standing in one: the place's RMS error after
+// three scans, and the other room's share of the weight.
+struct SplitCloud {
+  double rms_at_truth;
+  double twin_share;
+};
+
+SplitCloud three_scans_on_a_split_cloud(double cap, double stage_decay) {
   const Map m = test::two_rooms(true);
   const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
   const Pose truth{5.5, 1.8, 2.4};
-  const auto rms_in_room_a = [&](double cap) {
-    ParticleFilterOptions o = ParticleFilterOptions::fast_search();
-    o.particles = 400;
-    o.kld.max_particles = 400;
-    o.seed = 31;
-    o.roughening_max_xy = cap;
-    ParticleFilter f(m, world, o);
-    LaserSimulator laser(world, {}, 32);
-    std::mt19937_64 rng(33);
-    std::normal_distribution<double> n01(0.0, 1.0);
-    std::vector<Pose> poses;
-    for (int i = 0; i < 400; ++i) {  // as a search leaves them: 0.1 m and 0.7 degrees around each place
-      const double ox = i % 2 ? 12.0 : 0.0;
-      poses.push_back({truth.x + ox + 0.1 * n01(rng), truth.y + 0.1 * n01(rng), truth.theta + deg2rad(0.7) * n01(rng)});
+  ParticleFilterOptions o = ParticleFilterOptions::fast_search();
+  o.particles = 400;
+  o.kld.max_particles = 400;
+  o.seed = 31;
+  o.roughening_max_xy = cap;
+  o.roughening_stage_decay = stage_decay;
+  ParticleFilter f(m, world, o);
+  LaserSimulator laser(world, {}, 32);
+  std::mt19937_64 rng(33);
+  std::normal_distribution<double> n01(0.0, 1.0);
+  std::vector<Pose> poses;
+  for (int i = 0; i < 400; ++i) {
+    const double ox = i % 2 ? 12.0 : 0.0;
+    poses.push_back({truth.x + ox + 0.1 * n01(rng), truth.y + 0.1 * n01(rng), truth.theta + deg2rad(0.7) * n01(rng)});
+  }
+  f.set_particles(poses, std::vector<double>(poses.size(), 1.0));
+  for (int u = 0; u < 3; ++u) f.update(laser.scan(truth), truth.theta);  // standing still
+  double sum = 0, w = 0, in_b = 0;
+  for (size_t i = 0; i < f.poses().size(); ++i) {
+    if (f.poses()[i].x > 10) {
+      in_b += f.weights()[i];
+      continue;
     }
-    f.set_particles(poses, std::vector<double>(poses.size(), 1.0));
-    for (int u = 0; u < 3; ++u) f.update(laser.scan(truth), truth.theta);  // standing still
-    double sum = 0, w = 0, in_b = 0;
-    for (size_t i = 0; i < f.poses().size(); ++i) {
-      if (f.poses()[i].x > 10) {
-        in_b += f.weights()[i];
-        continue;
-      }
-      sum += f.weights()[i] * std::pow(distance(f.poses()[i], truth), 2);
-      w += f.weights()[i];
-    }
-    EXPECT_GT(in_b, 0.1) << "the twin room keeps its share: the cloud stays two places";
-    return std::sqrt(sum / w);
-  };
-  const double sharp = rms_in_room_a(0.05), blurred = rms_in_room_a(0.2);
-  EXPECT_LT(sharp, 0.1) << "a cap of 0.05 m";
-  EXPECT_GT(blurred, 1.5 * sharp) << "the default cap blurs the place the robot is at";
+    sum += f.weights()[i] * std::pow(distance(f.poses()[i], truth), 2);
+    w += f.weights()[i];
+  }
+  return {std::sqrt(sum / w), in_b};
+}
+
+TEST(ParticleFilter, PlacesFarApartStaySharpUnderRoughening) {
+  const SplitCloud sharp = three_scans_on_a_split_cloud(0.05, 1), blurred = three_scans_on_a_split_cloud(0.2, 1);
+  EXPECT_GT(sharp.twin_share, 0.1) << "the twin room keeps its share: the cloud stays two places";
+  EXPECT_GT(blurred.twin_share, 0.1);
+  EXPECT_LT(sharp.rms_at_truth, 0.1) << "a cap of 0.05 m";
+  EXPECT_GT(blurred.rms_at_truth, 1.5 * sharp.rms_at_truth) << "the default cap blurs the place the robot is at";
+}
+
+// Annealing's diffusion shrinking stage by stage keeps the default cap at a scan's first
+// stage and blurs the place far less over its six.
+TEST(ParticleFilter, AnnealingsDiffusionShrinksByStage) {
+  const SplitCloud blurred = three_scans_on_a_split_cloud(0.2, 1), decayed = three_scans_on_a_split_cloud(0.2, 0.5);
+  EXPECT_GT(decayed.twin_share, 0.1) << "the twin room keeps its share: the cloud stays two places";
+  EXPECT_LT(decayed.rms_at_truth, 0.1);
+  EXPECT_GT(blurred.rms_at_truth, 1.5 * decayed.rms_at_truth);
 }
 
 // The ambiguity verdict's residual (AmbiguityOptions::rivals) of the recent scans, each
