@@ -206,8 +206,8 @@ int main(int argc, char** argv) {
                  "0.2)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--roughening-stage-decay", s.roughening_stage_decay,
-                 "roughening's jitter at a scan's s-th annealing stage is the caps times this to the power s, for every "
-                 "preset but seed (1: the same at every stage; default: the preset's)")
+                 "roughening's jitter (capped) at a scan's s-th annealing stage is multiplied by this to the power s, "
+                 "for every preset but seed (1: the same at every stage; default: the preset's)")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--lost-unmapped-walls", s.lost.count_unmapped_walls,
                  "1: the lost detector counts beams stopped short on a straight piece longer than people against the "

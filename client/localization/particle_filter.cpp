@@ -115,10 +115,11 @@ ParticleFilterOptions ParticleFilterOptions::fast_search() {
   // places were still heavy after the three steps driven (docs/localization.md, "Six
   // annealing stages").
   o.tempering_stages = 6;
-  // Each stage after a scan's first jitters less (0.7^s of the caps): with the same caps
-  // at all six, a cloud of places far apart walked about 0.5 m per scan, and a sharp,
-  // correct place lost to a flat wrong one (docs/localization.md, "Annealing's diffusion
-  // shrinking by stage": the campus gained on three seeds, 94.0 -> 95.0 % on the fresh one).
+  // Each stage after a scan's first jitters less (0.7^s of the capped jitter): with the
+  // same at all six, a cloud of places far apart walked about 0.5 m per scan, and a
+  // sharp, correct place lost to a flat wrong one (docs/localization.md, "Annealing's
+  // diffusion shrinking by stage": the campus gained on three seeds, 94.0 -> 95.0 % on
+  // the fresh one).
   o.roughening_stage_decay = 0.7;
   // People in the scans (sensor_model.h, docs/localization.md). Not yet in robust() or
   // robust_search(): with it their campus tests (seed 6, seed 3) fail without people.

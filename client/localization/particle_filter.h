@@ -94,11 +94,11 @@ struct ParticleFilterOptions {
   // tempering several times per scan. A cap of 0.05 m kept the truth's sharp place on two
   // campus misses but not on a fresh seed: docs/localization.md, "The search's misses on
   // the campus (2026-12-05)".)
-  // Annealing's diffusion shrinks layer by layer (Deutscher et al. 2000): a scan's s-th
-  // stage (from 0) jitters by the caps above times roughening_stage_decay^s. With 1, a
-  // cloud of places far apart walks about sqrt(stages) x 0.2 m per scan, and a sharp,
-  // correct place loses to a flat wrong one (docs/localization.md, "Annealing's
-  // diffusion shrinking by stage"; 0.7 in fast_search).
+  // Annealing's diffusion shrinks layer by layer (Deutscher et al. 2000): at a scan's
+  // s-th stage (from 0) the jitter, capped as above, is multiplied by
+  // roughening_stage_decay^s. With 1, a cloud of places far apart walks about
+  // sqrt(stages) x 0.2 m per scan, and a sharp, correct place loses to a flat wrong one
+  // (docs/localization.md, "Annealing's diffusion shrinking by stage"; 0.7 in fast_search).
   double roughening_stage_decay = 1;
   bool global_search = false;         // the global phase searches (above)
   GlobalSearchOptions search;         // its likelihood field; margin and hL set from laser
