@@ -192,14 +192,15 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
   if (by_residual)
     for (size_t k = 1; k < c.list.size(); ++k)
       if (k != top) others.push_back(at[k]), others_weight.push_back(c.list[k].share);
-  const auto a_candidate = [&](const Pose& q) {
-    for (size_t k = 0; k < c.list.size(); ++k)
-      if (distance(at[k], q) <= o.min_separation || distance(c.list[k].mean, q) <= o.min_separation) return true;
-    return false;
+  // Whether q is within min_separation of one of the places.
+  const auto near_any = [&](const std::vector<Pose>& places, const Pose& q) {
+    return std::any_of(places.begin(), places.end(), [&](const Pose& p) { return distance(p, q) <= o.min_separation; });
   };
+  std::vector<Pose> candidates = at;
+  for (const PlaceCandidate& p : c.list) candidates.push_back(p.mean);
   if (with_rivals)
     for (size_t k = 0; k < std::min(rivals.size(), o.max_rivals); ++k)
-      if (!by_residual || !a_candidate(rivals[k])) others.push_back(rivals[k]), others_weight.push_back(0);
+      if (!by_residual || !near_any(candidates, rivals[k])) others.push_back(rivals[k]), others_weight.push_back(0);
   if (others.empty()) return out;
   // Each other place refined on the reference's judge (or it would beat the reference by
   // refinement alone) and within the margin is a place. One that, registered at itself,
@@ -212,9 +213,7 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
     held.insert(held.end(), at.begin(), at.end());
     for (const PlaceCandidate& p : c.list) held.push_back(p.mean);
   }
-  const auto apart = [&](const Pose& q) {
-    return std::all_of(held.begin(), held.end(), [&](const Pose& p) { return distance(p, q) > o.min_separation; });
-  };
+  const auto apart = [&](const Pose& q) { return !near_any(held, q); };
   // Each refined (and, near enough, registered at itself) on o.threads threads: this is
   // most of the verdict's time. Then taken in order, as places apart.
   const size_t n = others.size();
