@@ -553,10 +553,11 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
   const ParticleFilterOptions& f = s.filter;
   std::fprintf(out,
                "-- %s: %s, gamma %.2g, short beyond %.2g m%s, tempering ESS %.2g x %d stages, init density %.2g /m2, "
-               "roughening %.2g%s%s%s\n",
+               "roughening %.2g (x %.2g per stage, cap %.2g m)%s%s%s\n",
                name.c_str(), describe(f), f.sensor.gamma, f.sensor.short_beyond,
                f.sensor.short_only_foreground ? " (foreground only)" : "", f.tempering_ess, f.tempering_stages,
-               f.global_density, f.roughening, f.global_search ? ", global search (likelihood field, ray-cast rerank)" : "",
+               f.global_density, f.roughening, f.roughening_stage_decay, f.roughening_max_xy,
+               f.global_search ? ", global search (likelihood field, ray-cast rerank)" : "",
                f.global_search && f.search_drops_foreground ? ", foreground left out of the search" : "",
                f.global_search && f.search_short_only_foreground ? ", searched cloud: short only in front" : "");
   std::fflush(out);
