@@ -208,7 +208,7 @@ int main(int argc, char** argv) {
   app.add_option("--roughening-stage-decay", s.roughening_stage_decay,
                  "roughening's jitter (capped) at a scan's s-th annealing stage is multiplied by this to the power s, "
                  "for every preset but seed (1: the same at every stage; default: the preset's)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0.0, 1.0));
   app.add_option("--lost-unmapped-walls", s.lost.count_unmapped_walls,
                  "1: the lost detector counts beams stopped short on a straight piece longer than people against the "
                  "pose (a wall the map does not hold there; unmapped_walls.h), 0: it leaves every beam stopped short out")

@@ -10,8 +10,8 @@
 // than people (unmapped_walls.h), which the pose should explain; of the others, the
 // share within `tolerance` of the cast range agree, and those that pass through a wall
 // of the map do not. Measured on GDC1 (bench-localization --kidnaps): tracking with 10
-// people per scan, p5 0.75; kidnapped, median 0.3. The absolute share of matching beams falls to
-// 0.45 in the median with 10 people while tracking, as low as a kidnapped robot's.
+// people per scan, p5 0.75; kidnapped, median 0.3. The absolute share of matching beams
+// falls to 0.45 in the median with 10 people while tracking, as low as a kidnapped robot's.
 // The slow average learns a place's usual level (glass, doors the map has closed), so
 // only a drop well below it, lasting `hold` updates, says lost.
 //

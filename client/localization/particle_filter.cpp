@@ -144,6 +144,9 @@ ParticleFilter::ParticleFilter(const Map& map, std::shared_ptr<const RayCaster> 
       rng_(seeded(options.seed, 0xFFFFFFFFu)) {
   if (options.particles == 0) throw std::invalid_argument("ParticleFilterOptions.particles: expected > 0");
   if (options.beams <= 0) throw std::invalid_argument("ParticleFilterOptions.beams: expected > 0");
+  if (!(options.roughening_stage_decay >= 0 && options.roughening_stage_decay <= 1))
+    throw std::invalid_argument("ParticleFilterOptions.roughening_stage_decay: expected in [0, 1], got " +
+                                std::to_string(options.roughening_stage_decay));
   options_.threads = std::max(1, options.threads);
   for (int k = 0; k < options_.threads; ++k) chunk_rngs_.push_back(seeded(options.seed, k));
   set_map(map, std::move(caster));

@@ -473,9 +473,7 @@ void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
                  "  baseline, the detector leaving every beam stopped short out (--lost-unmapped-walls 0): detected %d "
                  "of %d, median %.1f s, max %.1f s\n",
                  b.detected, b.trials, percentile(b.detect_updates, 0.5) * s.scan_period_s,
-                 b.detect_updates.empty()
-                     ? NAN
-                     : *std::max_element(b.detect_updates.begin(), b.detect_updates.end()) * s.scan_period_s);
+                 percentile(b.detect_updates, 1.0) * s.scan_period_s);
   }
   for (size_t i = 0; i < k.wrong_error_m.size(); ++i)
     std::fprintf(out, "  wrong recovery %zu: the reported pose %.2f m off (out of 0.3 m and 3 deg)\n", i + 1,

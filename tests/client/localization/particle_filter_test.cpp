@@ -150,6 +150,18 @@ TEST(ParticleFilter, UpdateChecksItsInput) {
   EXPECT_THROW(f.update(std::vector<double>(130, 5.0)), std::invalid_argument);
 }
 
+TEST(ParticleFilter, RefusesAStageDecayOutsideZeroToOne) {
+  const Map m = test::room_map();
+  for (double decay : {-0.5, 1.5, std::nan("")}) {
+    ParticleFilterOptions o = small(100);
+    o.roughening_stage_decay = decay;
+    EXPECT_THROW(ParticleFilter(m, o), std::invalid_argument) << decay;
+  }
+  ParticleFilterOptions o = small(100);
+  o.roughening_stage_decay = 0;  // no jitter after a scan's first stage: allowed
+  EXPECT_NO_THROW(ParticleFilter(m, o));
+}
+
 TEST(ParticleFilter, UninformativeScanLeavesWeightsEqual) {
   const Map m = test::room_map();
   ParticleFilter f(m, std::make_shared<ConstantCaster>(), small(300));
