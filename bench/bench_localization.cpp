@@ -191,6 +191,15 @@ int main(int argc, char** argv) {
                  "1: the rivals are judged with each recent scan registered at the best place (ambiguity.h), 0: on the "
                  "scans as the odometry stitches them, for every preset but seed (default: the preset's)")
       ->check(CLI::Range(0, 1));
+  app.add_option("--register-moves-place", s.register_moves_place,
+                 "1: a place registered at itself in the ambiguity verdict is first moved to where its registered "
+                 "scans fit best (ambiguity.h), 0: it stays where the stitched scans put it, for every preset but seed "
+                 "(default: the preset's)")
+      ->check(CLI::Range(0, 1));
+  app.add_option("--rival-margin", s.rival_margin_z2,
+                 "per beam: a place whose residual is within this of the best place's stays beside it in the "
+                 "ambiguity verdict (ambiguity.h), for every preset but seed (default: the preset's)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--candidates-by-residual", s.candidates_by_residual,
                  "1: the cloud's places other than the heaviest and the best are judged by the registered residual, as "
                  "the rivals are (ambiguity.h), 0: by the tempered score's margin, for every preset but seed (default: "

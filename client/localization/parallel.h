@@ -10,7 +10,8 @@
 namespace fleetmap::localization {
 
 // fn(k, begin, end) for each chunk k in [0, threads); returns when all are done. The
-// first exception thrown by a chunk is rethrown here.
+// first exception thrown by a chunk is rethrown here. Called from inside a chunk, it runs
+// as one chunk on the calling thread: the threads are busy already.
 void parallel_for(int threads, size_t n, const std::function<void(int, size_t, size_t)>& fn);
 
 }  // namespace fleetmap::localization

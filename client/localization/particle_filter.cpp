@@ -707,24 +707,31 @@ RegisteredResidual ParticleFilter::registered_residual(std::shared_ptr<const Res
     window.min_step_xy = 0.003;
     window.min_step_theta = deg2rad(0.03);
     window.max_moves = o.register_moves;
+    std::vector<Pose> poses(std::min(r->ranges.size(), stitched.size()));  // each scan's registered pose
+    parallel_for(options_.threads, poses.size(), [&](int, size_t begin, size_t end) {
+      for (size_t k = begin; k < end; ++k) {
+        const Pose at = compose(place, stitched[k]);
+        const auto bounded = [&](const Pose& p) {
+          if (distance(p, at) > o.register_max_xy || std::fabs(angle_diff(p.theta, at.theta)) > o.register_max_theta)
+            return -std::numeric_limits<double>::infinity();
+          return -r->scan(k, p);
+        };
+        poses[k] = refine_place(at, bounded, window).pose;
+      }
+    });
+    // Relative to the latest scan's registered pose: a place judged on these scans is
+    // where that scan would have been taken.
+    const Pose latest = poses.empty() ? place : poses.back();
     std::vector<Odometry> offsets;
-    for (size_t k = 0; k < r->ranges.size() && k < stitched.size(); ++k) {
-      const Pose at = compose(place, stitched[k]);
-      const auto bounded = [&](const Pose& p) {
-        if (distance(p, at) > o.register_max_xy || std::fabs(angle_diff(p.theta, at.theta)) > o.register_max_theta)
-          return -std::numeric_limits<double>::infinity();
-        return -r->scan(k, p);
-      };
-      offsets.push_back(between(place, refine_place(at, bounded, window).pose));
-    }
+    for (const Pose& p : poses) offsets.push_back(between(latest, p));
     // A narrow return foreground.h flags may be the map's (a pillar, a post): where the
     // place explains it, within 3 sigma, it is kept. Such returns are what tells a place
     // from one without them (a campus trial: 0.09 per beam between the truth and a place
     // 280 m away with them left out, 0.28 with them).
     auto judged = std::make_shared<ResidualScans>(*r);
     std::vector<double> cast(beams_.size());
-    for (size_t k = 0; k < offsets.size(); ++k) {
-      const Pose p = compose(place, offsets[k]);
+    for (size_t k = 0; k < poses.size(); ++k) {
+      const Pose& p = poses[k];
       caster_->cast_scan(p.point(), p.theta, beams_, cast.data());
       for (size_t j = 0; j < cast.size(); ++j)
         if (!judged->kept[k][j] && std::fabs((*judged->ranges[k])[j] - cast[j]) <= 3 * o.rival_sigma) {
@@ -732,7 +739,8 @@ RegisteredResidual ParticleFilter::registered_residual(std::shared_ptr<const Res
           judged->kept_beams += 1;
         }
     }
-    return PlaceScore([judged, offsets = std::move(offsets)](const Pose& q) { return judged->place(q, offsets); });
+    return RegisteredScans{
+        latest, PlaceScore([judged, offsets = std::move(offsets)](const Pose& q) { return judged->place(q, offsets); })};
   };
 }
 

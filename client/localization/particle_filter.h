@@ -277,7 +277,8 @@ class ParticleFilter {
   PlaceScore recent_residual() const;
   // The same with each recent scan registered at a place (AmbiguityOptions::register_scans):
   // at its best pose within the window around where the stitching puts it. The score it
-  // returns keeps those poses relative to the place. Valid and callable as recent_residual().
+  // returns keeps those poses relative to the latest scan's (RegisteredScans). Valid and
+  // callable as recent_residual().
   RegisteredResidual registered_residual() const;
 
  private:

@@ -536,6 +536,8 @@ ParticleFilterOptions trial_filter(const TrialSettings& base, const std::string&
   if (base.foreground_width > 0) f.foreground.max_width = base.foreground_width;
   if (base.rivals >= 0) f.ambiguity.rivals = base.rivals > 0;
   if (base.register_scans >= 0) f.ambiguity.register_scans = base.register_scans > 0;
+  if (base.register_moves_place >= 0) f.ambiguity.register_moves_place = base.register_moves_place > 0;
+  if (base.rival_margin_z2 >= 0) f.ambiguity.rival_margin_z2 = base.rival_margin_z2;
   if (base.candidates_by_residual >= 0) f.ambiguity.candidates_by_residual = base.candidates_by_residual > 0;
   if (base.turn_in_place_sds >= 0) f.turn_in_place_sds = base.turn_in_place_sds;
   if (base.roughening_max_xy >= 0) f.roughening_max_xy = base.roughening_max_xy;

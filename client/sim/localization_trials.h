@@ -88,6 +88,10 @@ struct TrialSettings {
   int rivals = -1;
   // AmbiguityOptions::register_scans: 1 on, 0 off, negative: the preset's.
   int register_scans = -1;
+  // AmbiguityOptions::register_moves_place: 1 on, 0 off, negative: the preset's.
+  int register_moves_place = -1;
+  // AmbiguityOptions::rival_margin_z2 (negative: the preset's).
+  double rival_margin_z2 = -1;
   // AmbiguityOptions::candidates_by_residual: 1 on, 0 off, negative: the preset's.
   int candidates_by_residual = -1;
   // ParticleFilterOptions::turn_in_place_sds (0: turn_in_place alone; negative: the preset's).

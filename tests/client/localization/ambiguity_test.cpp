@@ -181,7 +181,7 @@ TEST(AmbiguityByLikelihood, RivalsAreJudgedByTheRegisteredResidualWhenGiven) {
   const auto [p, w, rival] = OneClusterAndARival();
   const AmbiguityOptions o;
   const auto registered = [](double c_extra) {
-    return RegisteredResidual([c_extra](const Pose&) { return two_wells(c_extra); });
+    return RegisteredResidual([c_extra](const Pose& at) { return RegisteredScans{at, two_wells(c_extra)}; });
   };
   // The residual says alike, registered C is worse by twice the margin.
   EXPECT_FALSE(find_ambiguity(p, w, o, flat, rival, two_wells(0), registered(2 * o.rival_margin_z2)).ambiguous());
@@ -199,7 +199,8 @@ TEST(AmbiguityByLikelihood, ARivalThatFitsBetterRegisteredAtItselfIsAPlace) {
   const AmbiguityOptions o;
   const auto registered = [&](double c_extra_at_c) {
     return RegisteredResidual([&o, c_extra_at_c](const Pose& at) {
-      return std::hypot(at.x - 15.2, at.y - 6.1) < 0.5 ? two_wells(c_extra_at_c) : two_wells(2 * o.rival_margin_z2);
+      return RegisteredScans{at, std::hypot(at.x - 15.2, at.y - 6.1) < 0.5 ? two_wells(c_extra_at_c)
+                                                                          : two_wells(2 * o.rival_margin_z2)};
     });
   };
   const Ambiguity a = find_ambiguity(p, w, o, flat, rival, two_wells(0), registered(-0.01));
@@ -210,6 +211,33 @@ TEST(AmbiguityByLikelihood, ARivalThatFitsBetterRegisteredAtItselfIsAPlace) {
   AmbiguityOptions narrow = o;
   narrow.rival_register_window_z2 = o.rival_margin_z2;
   EXPECT_FALSE(find_ambiguity(p, w, narrow, flat, rival, two_wells(0), registered(-0.01)).ambiguous());
+}
+
+// The stitched residual puts the cloud's place at A (3.2, 2.1); the scans registered at a
+// place q fit best with q at A* (3.7, 2.1), 0.5 m along, beyond the registration's
+// window, and lose 0.8 per square metre away from it. Rival C fits those scans twice the
+// margin worse than the scans fit A*. Judged at A, which pays 0.2 itself, C is within the
+// margin; moved onto A* first (register_moves_place), the reference leaves C out.
+TEST(AmbiguityByLikelihood, TheReferenceMovesOntoItsRegisteredScans) {
+  const auto [p, w, rival] = OneClusterAndARival();
+  AmbiguityOptions o;
+  const double c_extra = 2 * o.rival_margin_z2;
+  const RegisteredResidual registered = [c_extra](const Pose& q) {
+    const double pays = 0.8 * (std::pow(q.x - 3.7, 2) + std::pow(q.y - 2.1, 2));
+    return RegisteredScans{q, [q, pays, c_extra](const Pose& r) {
+                             const double dq = std::hypot(r.x - q.x, r.y - q.y), dc = std::hypot(r.x - 15.2, r.y - 6.1);
+                             return -1.0 - std::min(100 * dq * dq + pays, 100 * dc * dc + c_extra);
+                           }};
+  };
+  ASSERT_TRUE(o.register_moves_place);
+  const Ambiguity moved = find_ambiguity(p, w, o, flat, rival, two_wells(0), registered);
+  EXPECT_FALSE(moved.ambiguous());
+  ASSERT_EQ(moved.places.size(), 1u);
+  EXPECT_NEAR(moved.places[0].x, 3.2, 0.05);  // the cloud's place is what it reports
+  o.register_moves_place = false;
+  const Ambiguity kept = find_ambiguity(p, w, o, flat, rival, two_wells(0), registered);
+  ASSERT_TRUE(kept.ambiguous());
+  EXPECT_NEAR(kept.places[1].x, 15.2, 0.01);
 }
 
 // The cloud's own second place, with a residual given, is judged as a rival is: by the

@@ -429,12 +429,14 @@ TEST(ParticleFilter, TheRegisteredResidualForgivesTheStitchingsError) {
   }
   const double at_true_poses = sum / n;
   const double stitched = -f.recent_residual()(truth);
-  const double registered = -f.registered_residual()(truth)(truth);
+  const RegisteredScans at_truth = f.registered_residual()(truth);
+  const double registered = -at_truth.score(at_truth.place);
   EXPECT_GT(stitched, at_true_poses + 0.5);
   EXPECT_NEAR(registered, at_true_poses, 0.1);
   // The window does not let a place 1 m off slide onto the truth's scans.
   const Pose aside = compose(truth, Odometry{0, 1.0, 0});
-  const double off = -f.registered_residual()(aside)(aside);
+  const RegisteredScans at_aside = f.registered_residual()(aside);
+  const double off = -at_aside.score(at_aside.place);
   EXPECT_GT(off, registered + 0.5);
 }
 
