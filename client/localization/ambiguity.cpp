@@ -218,7 +218,14 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
   // fits at least as well as the reference is a place too: the reference may be the
   // wrong one of the two. One that comes onto a place already held is that place.
   // Returns the places kept, in order, with their weights.
-  const auto judge_others = [&](const Reference& reference, bool moved) {
+  struct Kept {
+    size_t other;  // index in others
+    Pose place;
+  };
+  // plain_kept: against a moved reference, the others kept against it unmoved.
+  const auto judge_others = [&](const Reference& reference, bool moved, const std::vector<Kept>& plain_kept) {
+    std::vector<bool> was_kept(others.size(), false);
+    for (const Kept& k : plain_kept) was_kept[k.other] = true;
     const PlaceScore& judge = reference.judge;
     const RefinedPlace& ref = reference.place;
     std::vector<Pose> held{at[0], c.list[0].mean, at[top], c.list[top].mean, ref.pose};
@@ -236,8 +243,13 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
       for (size_t k = begin; k < end; ++k) {
         if (!apart(others[k])) continue;
         const RefinedPlace& r = refined[k].emplace(refine_place(others[k], judge, fine));
-        if (!registered || r.score >= ref.score - o.rival_margin_z2 || r.score < ref.score - o.rival_register_window_z2)
+        if (!registered || r.score >= ref.score - o.rival_margin_z2) continue;
+        if (moved && was_kept[k]) {
+          // A place against the unmoved reference is moved too before it is dropped.
+          self[k] = register_at(r.pose, true).place.score;
           continue;
+        }
+        if (r.score < ref.score - o.rival_register_window_z2) continue;
         self[k] = register_at(r.pose, false).place.score;
         // Against a moved reference, moved too where that can decide (moving raised the
         // reference's fit by up to 0.07 per beam on the campus, less than the margin).
@@ -245,27 +257,27 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
           self[k] = std::max(self[k], register_at(r.pose, true).place.score);
       }
     });
-    std::vector<std::pair<Pose, double>> kept;
+    std::vector<Kept> kept;
     for (size_t k = 0; k < n; ++k) {
       if (!refined[k] || !apart(others[k]) || !apart(refined[k]->pose)) continue;
       const RefinedPlace& r = *refined[k];
       if (!(r.score >= ref.score - o.rival_margin_z2) && !(self[k] >= ref.score)) continue;
       held.push_back(r.pose);
-      kept.emplace_back(r.pose, others_weight[k]);
+      kept.push_back({k, r.pose});
     }
     return kept;
   };
-  std::vector<std::pair<Pose, double>> kept = judge_others(*reference, false);
+  std::vector<Kept> kept = judge_others(*reference, false, {});
   // Some place kept: the reference is moved to where its registered scans fit best and
   // the others judged again (register_moves_place). Where none is kept, the reference
   // already stands out, and moving it (a few tenths of a second) would not change that.
   if (!kept.empty() && registered && o.register_moves_place) {
     Reference moved = register_at(reference->place.pose, true);
-    if (moved.place.score > reference->place.score) kept = judge_others(moved, true);
+    if (moved.place.score > reference->place.score) kept = judge_others(moved, true, kept);
   }
-  for (const auto& [place, weight] : kept) {
-    out.places.push_back(place);
-    out.weights.push_back(weight);
+  for (const Kept& k : kept) {
+    out.places.push_back(k.place);
+    out.weights.push_back(others_weight[k.other]);
   }
   return out;
 }

@@ -751,6 +751,12 @@ Ambiguity ParticleFilter::ambiguity(AmbiguityRule rule) const {
   AmbiguityOptions o = options_.ambiguity;
   o.threads = options_.threads;  // the residuals cast from any thread
   const auto scans = residual_scans();  // one stitching and one foreground pass for both scores
+  // The move rests on differences of a few hundredths per beam between registered fits;
+  // among people those differ by more (AmbiguityOptions::move_max_foreground).
+  size_t beams = 0;
+  for (const auto& kept : scans->kept) beams += kept.size();
+  if (beams > 0 && 1 - scans->kept_beams / static_cast<double>(beams) > o.move_max_foreground)
+    o.register_moves_place = false;
   return find_ambiguity(poses_, weights_, o, recent_fit(), rivals_, stitched_residual(scans),
                         o.register_scans ? registered_residual(scans) : RegisteredResidual{});
 }
