@@ -35,10 +35,16 @@ std::chrono::steady_clock::duration from_ms(double ms) {
 
 // A statement the database rolled back whole, to be sent again: a deadlock, or on a
 // Galera cluster a certification conflict with a commit on another node (1213); a lock
-// wait past kLockWaitS (1205: autocommit, so the statement was the whole transaction).
+// wait past kLockWaitS (1205: autocommit, so the statement was the whole transaction);
+// a request's INSERT given an id another row holds (1062 on PRIMARY: the robot never
+// names the id, so it is the node's auto-increment counter, seen behind just after a
+// node rejoined the cluster; the next try takes the next value).
 bool rolled_back(const mysqlpp::Exception& e) {
   const auto* bq = dynamic_cast<const mysqlpp::BadQuery*>(&e);
-  return bq && (bq->errnum() == 1213 || bq->errnum() == 1205);
+  if (!bq) return false;
+  const unsigned n = bq->errnum();
+  return n == 1213 || n == 1205 ||
+         (n == 1062 && std::string_view(bq->what()).find("for key 'PRIMARY'") != std::string_view::npos);
 }
 
 // How long one robot statement may wait on a row lock before it is sent again. The
