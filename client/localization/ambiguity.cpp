@@ -272,8 +272,11 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
   // the others judged again (register_moves_place). Where none is kept, the reference
   // already stands out, and moving it (a few tenths of a second) would not change that.
   if (!kept.empty() && registered && o.register_moves_place) {
+    // Moved farther than move_max_shift from the place the filter reports, it found that
+    // place off, not the look-alikes worse: the verdict stays.
     Reference moved = register_at(reference->place.pose, true);
-    if (moved.place.score > reference->place.score) kept = judge_others(moved, true, kept);
+    if (moved.place.score > reference->place.score && distance(moved.place.pose, c.list[top].mean) <= o.move_max_shift)
+      kept = judge_others(moved, true, kept);
   }
   for (const Kept& k : kept) {
     out.places.push_back(k.place);

@@ -103,8 +103,12 @@ struct AmbiguityOptions {
   // front of the map (foreground.h), the filter does not move (particle_filter.h). With
   // 10 people in the scans on GDC1, moving turned 3 of 50 "ambiguous" into wrong poses,
   // one 23 m off: the truth, moved too, fit 0.05 per beam worse than a wrong place.
+  // Nor when the moved reference lies more than move_max_shift (the bounds of a
+  // localization) from its cluster's mean, what the filter reports: there the move found
+  // the estimate off (GDC1: two starts 0.44 and 0.96 m off became wrong poses).
   bool register_moves_place = true;
   double move_max_foreground = 0.2;
+  double move_max_shift = 0.3;
   double place_step_xy = 0.3, place_step_theta = deg2rad(1.5);
   int place_moves = 8;
   // The cloud's candidates other than the heaviest and the best are judged as rivals
