@@ -214,28 +214,39 @@ TEST(AmbiguityByLikelihood, ARivalThatFitsBetterRegisteredAtItselfIsAPlace) {
 }
 
 // The stitched residual puts the cloud's place at A (3.2, 2.1); the scans registered at a
-// place q fit best with q at A* (3.7, 2.1), 0.5 m along, beyond the registration's
-// window, and lose 0.8 per square metre away from it. Rival C fits those scans twice the
-// margin worse than the scans fit A*. Judged at A, which pays 0.2 itself, C is within the
-// margin; moved onto A* first (register_moves_place), the reference leaves C out.
-TEST(AmbiguityByLikelihood, TheReferenceMovesOntoItsRegisteredScans) {
-  const auto [p, w, rival] = OneClusterAndARival();
-  AmbiguityOptions o;
-  const double c_extra = 2 * o.rival_margin_z2;
-  const RegisteredResidual registered = [c_extra](const Pose& q) {
-    const double pays = 0.8 * (std::pow(q.x - 3.7, 2) + std::pow(q.y - 2.1, 2));
+// place q fit best with q at `best`, and lose 0.2 per beam at A. Rival C fits those scans
+// twice the margin worse than the scans fit `best`.
+RegisteredResidual registered_best_at(Point best, double c_extra) {
+  const double k = 0.2 / (std::pow(best.x - 3.2, 2) + std::pow(best.y - 2.1, 2));
+  return [best, k, c_extra](const Pose& q) {
+    const double pays = k * (std::pow(q.x - best.x, 2) + std::pow(q.y - best.y, 2));
     return RegisteredScans{q, [q, pays, c_extra](const Pose& r) {
                              const double dq = std::hypot(r.x - q.x, r.y - q.y), dc = std::hypot(r.x - 15.2, r.y - 6.1);
                              return -1.0 - std::min(100 * dq * dq + pays, 100 * dc * dc + c_extra);
                            }};
   };
+}
+
+// With `best` 0.2 m from A, within the bounds of a localization: judged at A, which pays
+// 0.2 itself, C is within the margin; moved first (register_moves_place), the reference
+// leaves C out. With `best` 0.5 m away, the move found the cloud's place off, and the
+// verdict stays.
+TEST(AmbiguityByLikelihood, TheReferenceMovesOntoItsRegisteredScans) {
+  const auto [p, w, rival] = OneClusterAndARival();
+  AmbiguityOptions o;
+  const double c_extra = 2 * o.rival_margin_z2;
   ASSERT_TRUE(o.register_moves_place);
-  const Ambiguity moved = find_ambiguity(p, w, o, flat, rival, two_wells(0), registered);
+  const Ambiguity moved = find_ambiguity(p, w, o, flat, rival, two_wells(0), registered_best_at({3.4, 2.1}, c_extra));
   EXPECT_FALSE(moved.ambiguous());
   ASSERT_EQ(moved.places.size(), 1u);
   EXPECT_NEAR(moved.places[0].x, 3.2, 0.05);  // the cloud's place is what it reports
+  const Ambiguity far = find_ambiguity(p, w, o, flat, rival, two_wells(0), registered_best_at({3.7, 2.1}, c_extra));
+  ASSERT_TRUE(far.ambiguous());
+  AmbiguityOptions wide = o;
+  wide.move_max_shift = 1.0;  // the guard is what kept it: without it, C is out
+  EXPECT_FALSE(find_ambiguity(p, w, wide, flat, rival, two_wells(0), registered_best_at({3.7, 2.1}, c_extra)).ambiguous());
   o.register_moves_place = false;
-  const Ambiguity kept = find_ambiguity(p, w, o, flat, rival, two_wells(0), registered);
+  const Ambiguity kept = find_ambiguity(p, w, o, flat, rival, two_wells(0), registered_best_at({3.4, 2.1}, c_extra));
   ASSERT_TRUE(kept.ambiguous());
   EXPECT_NEAR(kept.places[1].x, 15.2, 0.01);
 }
