@@ -217,7 +217,7 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
   // refinement alone) and within the margin is a place. One that, registered at itself,
   // fits at least as well as the reference is a place too: the reference may be the
   // wrong one of the two. One that comes onto a place already held is that place.
-  // Returns the places kept, in order, with their weights.
+  // Returns the places kept, in order: each one's index in `others` and refined pose.
   struct Kept {
     size_t other;  // index in others
     Pose place;
