@@ -160,7 +160,17 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
   coarse.min_step_theta = o.place_step_theta / 2;
   coarse.max_moves = o.place_moves;
   const auto register_at = [&](const Pose& p, bool move) {
-    const Pose at = move ? refine_place(p, [&](const Pose& q) { return fit(registered(q)); }, coarse).pose : p;
+    if (!move) {
+      // Unmoved, the place stays where it was registered, and the scans keep their poses
+      // relative to it: the others are refined on them from where they are (a twin start
+      // of the campus, seed 7373, was lost when they started from the latest scan's
+      // registered pose instead).
+      const RegisteredScans scans = registered(p);
+      const Odometry to_latest = between(p, scans.place);
+      return Reference{{p, fit(scans), 0},
+                       [score = scans.score, to_latest](const Pose& q) { return score(compose(q, to_latest)); }};
+    }
+    const Pose at = refine_place(p, [&](const Pose& q) { return fit(registered(q)); }, coarse).pose;
     const RegisteredScans scans = registered(at);
     return Reference{{scans.place, fit(scans), 0}, scans.score};
   };
