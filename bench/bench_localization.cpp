@@ -192,9 +192,9 @@ int main(int argc, char** argv) {
                  "scans as the odometry stitches them, for every preset but seed (default: the preset's)")
       ->check(CLI::Range(0, 1));
   app.add_option("--register-moves-place", s.register_moves_place,
-                 "1: a place registered at itself in the ambiguity verdict is first moved to where its registered "
-                 "scans fit best (ambiguity.h), 0: it stays where the stitched scans put it, for every preset but seed "
-                 "(default: the preset's)")
+                 "1: when the ambiguity verdict would keep another place, its reference is moved to where its "
+                 "registered scans fit best and the others judged again (not among people, nor beyond 0.3 m of the "
+                 "reported place; ambiguity.h), 0: never moved, for every preset but seed (default: the preset's)")
       ->check(CLI::Range(0, 1));
   app.add_option("--rival-margin", s.rival_margin_z2,
                  "per beam: a place whose residual is within this of the best place's stays beside it in the "
