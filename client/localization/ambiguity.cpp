@@ -3,12 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <optional>
 #include <unordered_map>
 
-#include "client/localization/parallel.h"
-#include "client/localization/place_refinement.h"
+#include "client/localization/residual_judge.h"
 
 namespace fleetmap::localization {
 
@@ -136,58 +134,17 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
   // the tempered score let places 120 m apart that are no twins come within its margin
   // on the campus (0.019 per beam apart; by the registered residual, 0.4 and more).
   const bool by_residual = o.candidates_by_residual && static_cast<bool>(residual);
-  // Refinement by residual: its peak is narrow, so the steps go finer than the filter's
-  // settling.
-  RefineOptions fine;
-  fine.min_step_xy = 0.003;
-  fine.min_step_theta = deg2rad(0.03);
-  fine.max_moves = 80;
-  // The reference: a candidate refined by residual, and registered: the scans' poses
-  // corrected there, where the stitching's error shows. A place alike along the path
-  // fits those same poses (a twin shares the path's geometry), so the others are refined
-  // and judged on them as a whole.
-  struct Reference {
-    RefinedPlace place;
-    PlaceScore judge;
-  };
-  const auto fit = [](const RegisteredScans& s) { return s.score(s.place); };
-  // A place with the scans registered at it; moved, first to where they fit best, each
-  // pose tried registered anew (register_moves_place).
-  RefineOptions coarse;
-  coarse.step_xy = o.place_step_xy;
-  coarse.step_theta = o.place_step_theta;
-  coarse.min_step_xy = o.place_step_xy / 2;
-  coarse.min_step_theta = o.place_step_theta / 2;
-  coarse.max_moves = o.place_moves;
-  const auto register_at = [&](const Pose& p, bool move) {
-    if (!move) {
-      // Unmoved, the place stays where it was registered, and the scans keep their poses
-      // relative to it: the others are refined on them from where they are (a twin start
-      // of the campus, seed 7373, was lost when they started from the latest scan's
-      // registered pose instead).
-      const RegisteredScans scans = registered(p);
-      const Odometry to_latest = between(p, scans.place);
-      return Reference{{p, fit(scans), 0},
-                       [score = scans.score, to_latest](const Pose& q) { return score(compose(q, to_latest)); }};
-    }
-    const Pose at = refine_place(p, [&](const Pose& q) { return fit(registered(q)); }, coarse).pose;
-    const RegisteredScans scans = registered(at);
-    return Reference{{scans.place, fit(scans), 0}, scans.score};
-  };
-  const auto reference_at = [&](const Pose& p) {
-    Reference r{refine_place(p, residual, fine), residual};
-    if (registered) r = register_at(r.place.pose, false);
-    return r;
-  };
+  std::optional<ResidualJudge> residual_judge;
+  if (residual) residual_judge.emplace(o, residual, registered);
   size_t top = best_scored;
-  std::optional<Reference> reference;
-  if (by_residual || with_rivals) reference = reference_at(at[top]);
+  std::optional<ResidualJudge::Reference> reference;
+  if (by_residual || with_rivals) reference = residual_judge->reference_at(at[top]);
   // The best by the tempered score and the heaviest (what estimate() reports) disagree:
   // the residual, each registered at itself, decides which is the reference; the other
   // is judged against it. (On the campus the tempered score put a place 120 m off 0.011
   // per beam above the truth, whose residual was 0.4 better.)
   if (by_residual && top != 0) {
-    Reference heaviest = reference_at(at[0]);
+    ResidualJudge::Reference heaviest = residual_judge->reference_at(at[0]);
     if (heaviest.place.score >= reference->place.score) reference = std::move(heaviest), top = 0;
   }
   Ambiguity out = all_places(c);
@@ -223,72 +180,25 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
     for (size_t k = 0; k < std::min(rivals.size(), o.max_rivals); ++k)
       if (!by_residual || !near_any(candidates, rivals[k])) others.push_back(rivals[k]), others_weight.push_back(0);
   if (others.empty()) return out;
-  // Each other place refined on the reference's judge (or it would beat the reference by
-  // refinement alone) and within the margin is a place. One that, registered at itself,
-  // fits at least as well as the reference is a place too: the reference may be the
-  // wrong one of the two. One that comes onto a place already held is that place.
-  // Returns the places kept, in order: each one's index in `others` and refined pose.
-  struct Kept {
-    size_t other;  // index in others
-    Pose place;
-  };
-  // plain_kept: against a moved reference, the others kept against it unmoved.
-  const auto judge_others = [&](const Reference& reference, bool moved, const std::vector<Kept>& plain_kept) {
-    std::vector<bool> was_kept(others.size(), false);
-    for (const Kept& k : plain_kept) was_kept[k.other] = true;
-    const PlaceScore& judge = reference.judge;
-    const RefinedPlace& ref = reference.place;
-    std::vector<Pose> held{at[0], c.list[0].mean, at[top], c.list[top].mean, ref.pose};
-    if (!by_residual) {
-      held.insert(held.end(), at.begin(), at.end());
-      for (const PlaceCandidate& p : c.list) held.push_back(p.mean);
-    }
-    const auto apart = [&](const Pose& q) { return !near_any(held, q); };
-    // Each refined (and, near enough, registered at itself) on o.threads threads: this is
-    // most of the verdict's time. Then taken in order, as places apart.
-    const size_t n = others.size();
-    std::vector<std::optional<RefinedPlace>> refined(n);  // none: not apart from the places held
-    std::vector<double> self(n, -std::numeric_limits<double>::infinity());
-    parallel_for(std::max(1, o.threads), n, [&](int, size_t begin, size_t end) {
-      for (size_t k = begin; k < end; ++k) {
-        if (!apart(others[k])) continue;
-        const RefinedPlace& r = refined[k].emplace(refine_place(others[k], judge, fine));
-        if (!registered || r.score >= ref.score - o.rival_margin_z2) continue;
-        if (moved && was_kept[k]) {
-          // A place against the unmoved reference is moved too before it is dropped.
-          self[k] = register_at(r.pose, true).place.score;
-          continue;
-        }
-        if (r.score < ref.score - o.rival_register_window_z2) continue;
-        self[k] = register_at(r.pose, false).place.score;
-        // Against a moved reference, moved too where that can decide (moving raised the
-        // reference's fit by up to 0.07 per beam on the campus, less than the margin).
-        if (moved && self[k] < ref.score && self[k] >= ref.score - o.rival_margin_z2)
-          self[k] = std::max(self[k], register_at(r.pose, true).place.score);
-      }
-    });
-    std::vector<Kept> kept;
-    for (size_t k = 0; k < n; ++k) {
-      if (!refined[k] || !apart(others[k]) || !apart(refined[k]->pose)) continue;
-      const RefinedPlace& r = *refined[k];
-      if (!(r.score >= ref.score - o.rival_margin_z2) && !(self[k] >= ref.score)) continue;
-      held.push_back(r.pose);
-      kept.push_back({k, r.pose});
-    }
-    return kept;
-  };
-  std::vector<Kept> kept = judge_others(*reference, false, {});
+  // The places the others must be apart from: the heaviest and the reference's candidate
+  // (the residual's judge) or every candidate (the tempered score's margin).
+  std::vector<Pose> held{at[0], c.list[0].mean, at[top], c.list[top].mean};
+  if (!by_residual) {
+    held.insert(held.end(), at.begin(), at.end());
+    for (const PlaceCandidate& p : c.list) held.push_back(p.mean);
+  }
+  std::vector<ResidualJudge::Kept> kept = residual_judge->judge(others, held, *reference);
   // Some place kept: the reference is moved to where its registered scans fit best and
   // the others judged again (register_moves_place). Where none is kept, the reference
   // already stands out, and moving it (a few tenths of a second) would not change that.
   if (!kept.empty() && registered && o.register_moves_place) {
     // Moved farther than move_max_shift from the place the filter reports, it found that
     // place off, not the look-alikes worse: the verdict stays.
-    Reference moved = register_at(reference->place.pose, true);
+    const ResidualJudge::Reference moved = residual_judge->register_at(reference->place.pose, true);
     if (moved.place.score > reference->place.score && distance(moved.place.pose, c.list[top].mean) <= o.move_max_shift)
-      kept = judge_others(moved, true, kept);
+      kept = residual_judge->judge(others, held, moved, true, kept);
   }
-  for (const Kept& k : kept) {
+  for (const ResidualJudge::Kept& k : kept) {
     out.places.push_back(k.place);
     out.weights.push_back(others_weight[k.other]);
   }
