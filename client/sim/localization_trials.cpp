@@ -428,7 +428,7 @@ KidnapResult run_kidnap_trials(const Map& map, std::shared_ptr<const RayCaster> 
       ++res.wrong;
       res.wrong_error_m.push_back(run.error);
     }
-    res.recover_compute_s += seconds_since(t0);
+    res.recover_compute_s += seconds_since(t0) - run.explain_seconds;
   }
   // Normal driving, no kidnap: every "lost" is a false alarm.
   if (s.false_alarm_drive > 0) {
