@@ -218,6 +218,17 @@ int main(int argc, char** argv) {
                  "roughening's jitter (capped) at a scan's s-th annealing stage is multiplied by this to the power s, "
                  "for every preset but seed (1: the same at every stage; default: the preset's)")
       ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--lost-floor", s.lost.floor,
+                 "the lost detector's floor: lost when the fast average of the scans' agreement stays below it (and "
+                 "below ratio x the slow average) for hold updates")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--lost-hold", s.lost.hold, "updates the lost detector's fast average must stay low")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
+  app.add_option("--lost-fast-alpha", s.lost.fast_alpha, "the lost detector's fast average's weight of each new scan")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   app.add_option("--lost-unmapped-walls", s.lost.count_unmapped_walls,
                  "1: the lost detector counts beams stopped short on a straight piece longer than people against the "
                  "pose (a wall the map does not hold there; unmapped_walls.h), 0: it leaves every beam stopped short out")
