@@ -226,9 +226,10 @@ int main(int argc, char** argv) {
   app.add_option("--lost-hold", s.lost.hold, "updates the lost detector's fast average must stay low")
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
-  app.add_option("--lost-fast-alpha", s.lost.fast_alpha, "the lost detector's fast average's weight of each new scan")
+  app.add_option("--lost-fast-alpha", s.lost.fast_alpha,
+                 "the lost detector's fast average's weight of each new scan, in (0, 1] (0 would never move it)")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(CLI::Range(1e-3, 1.0));
   app.add_option("--lost-unmapped-walls", s.lost.count_unmapped_walls,
                  "1: the lost detector counts beams stopped short on a straight piece longer than people against the "
                  "pose (a wall the map does not hold there; unmapped_walls.h), 0: it leaves every beam stopped short out")

@@ -170,15 +170,11 @@ Ambiguity find_ambiguity(const std::vector<Pose>& poses, const std::vector<doubl
   if (by_residual)
     for (size_t k = 1; k < c.list.size(); ++k)
       if (k != top) others.push_back(at[k]), others_weight.push_back(c.list[k].share);
-  // Whether q is within min_separation of one of the places.
-  const auto near_any = [&](const std::vector<Pose>& places, const Pose& q) {
-    return std::any_of(places.begin(), places.end(), [&](const Pose& p) { return distance(p, q) <= o.min_separation; });
-  };
   std::vector<Pose> candidates = at;
   for (const PlaceCandidate& p : c.list) candidates.push_back(p.mean);
   if (with_rivals)
     for (size_t k = 0; k < std::min(rivals.size(), o.max_rivals); ++k)
-      if (!by_residual || !near_any(candidates, rivals[k])) others.push_back(rivals[k]), others_weight.push_back(0);
+      if (!by_residual || !near_any(candidates, rivals[k], o.min_separation)) others.push_back(rivals[k]), others_weight.push_back(0);
   if (others.empty()) return out;
   // The places the others must be apart from: the heaviest and the reference's candidate
   // (the residual's judge) or every candidate (the tempered score's margin).

@@ -57,9 +57,7 @@ std::vector<ResidualJudge::Kept> ResidualJudge::judge(const std::vector<Pose>& o
   for (const Kept& k : plain_kept) was_kept[k.other] = true;
   const RefinedPlace& ref = reference.place;
   held.push_back(ref.pose);
-  const auto apart = [&](const Pose& q) {
-    return std::none_of(held.begin(), held.end(), [&](const Pose& p) { return distance(p, q) <= o_.min_separation; });
-  };
+  const auto apart = [&](const Pose& q) { return !near_any(held, q, o_.min_separation); };
   // Each refined (and, near enough, registered at itself) on o.threads threads: this is
   // most of the verdict's time. Then taken in order, as places apart.
   const size_t n = others.size();

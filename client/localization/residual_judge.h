@@ -12,6 +12,13 @@
 
 namespace fleetmap::localization {
 
+// Whether q lies within `separation` of one of the places: then it is that place.
+inline bool near_any(const std::vector<Pose>& places, const Pose& q, double separation) {
+  for (const Pose& p : places)
+    if (distance(p, q) <= separation) return true;
+  return false;
+}
+
 class ResidualJudge {
  public:
   struct Reference {
@@ -44,7 +51,7 @@ class ResidualJudge {
                           bool moved = false, const std::vector<Kept>& plain_kept = {}) const;
 
  private:
-  const AmbiguityOptions& o_;
+  AmbiguityOptions o_;  // a copy: a judge may outlive the caller's options
   PlaceScore residual_;
   RegisteredResidual registered_;
   RefineOptions fine_;    // by residual: its peak is narrow
