@@ -71,9 +71,14 @@ TEST(ScanAgreement, AWallTheMapLacksCountsAgainstThePose) {
 TEST(LostDetector, StaysFoundOnAGoodOrMerelyHarderPlace) {
   LostDetector d;
   for (int i = 0; i < 100; ++i) EXPECT_FALSE(d.update(i % 5 == 0 ? 0.8 : 0.95)) << i;
-  // A harder stretch (glass walls): the fit drops to 0.7 and stays there. Above the
+  // A harder stretch (glass walls): the fit drops to 0.75 and stays there. Above the
   // floor: not lost.
-  for (int i = 0; i < 100; ++i) EXPECT_FALSE(d.update(0.7)) << i;
+  for (int i = 0; i < 100; ++i) EXPECT_FALSE(d.update(0.75)) << i;
+  // Below it and below the ratio to the slow average, it is.
+  LostDetector e;
+  for (int i = 0; i < 100; ++i) e.update(0.95);
+  for (int i = 0; i < 10; ++i) e.update(0.6);
+  EXPECT_TRUE(e.lost());
 }
 
 TEST(LostDetector, ALastingDropIsLostAfterHoldUpdatesAndResetForgetsIt) {
