@@ -74,11 +74,24 @@ TEST(LostDetector, StaysFoundOnAGoodOrMerelyHarderPlace) {
   // A harder stretch (glass walls): the fit drops to 0.75 and stays there. Above the
   // floor: not lost.
   for (int i = 0; i < 100; ++i) EXPECT_FALSE(d.update(0.75)) << i;
-  // Below it and below the ratio to the slow average, it is.
-  LostDetector e;
-  for (int i = 0; i < 100; ++i) e.update(0.95);
-  for (int i = 0; i < 10; ++i) e.update(0.6);
-  EXPECT_TRUE(e.lost());
+}
+
+TEST(LostDetector, ALookAlikeCorridorIsLostWithinSixScans) {
+  // The agreement traced on GDC1 after a robot was carried 17.6 m along a corridor whose
+  // other stretch looks alike (docs/localization.md, "The floor at 0.7"): half the beams
+  // that tell agree at once, more as both places run alike. A floor at 0.6 waited for
+  // the places to part, 3.8 s later.
+  LostDetector d;
+  for (int i = 0; i < 100; ++i) d.update(1.0);  // tracking on a bare corridor: every beam agrees
+  const double after_kidnap[] = {0.50, 0.52, 0.56, 0.59, 0.62, 0.65};
+  for (double a : after_kidnap) d.update(a);
+  EXPECT_TRUE(d.lost());
+  LostDetectorOptions old_floor;
+  old_floor.floor = 0.6;
+  LostDetector e(old_floor);
+  for (int i = 0; i < 100; ++i) e.update(1.0);
+  for (double a : after_kidnap) e.update(a);
+  EXPECT_FALSE(e.lost());
 }
 
 TEST(LostDetector, ALastingDropIsLostAfterHoldUpdatesAndResetForgetsIt) {
