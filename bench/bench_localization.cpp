@@ -247,6 +247,11 @@ int main(int argc, char** argv) {
   app.add_option("--recover-updates", s.recover_updates, "updates a recovery may take (0: detection only)")
       ->capture_default_str();
   double false_alarm_hours = 0;
+  app.add_option("--report-after", s.report_after,
+                 "a recovery reports its pose once the cloud has converged with no look-alike place on this many "
+                 "scans in a row, as the robot does (report_gate.h; 1: at the first)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
   app.add_option("--false-alarm-hours", false_alarm_hours,
                  "hours of driving without a kidnap, for the lost detector's false alarms (a scan every 0.2 s, 0.25 m)")
       ->capture_default_str();

@@ -94,6 +94,7 @@ GlobalRun run_global_localization(const Map& map, std::shared_ptr<const RayCaste
   Pose truth = start;
   pf.init_global(compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
   GlobalRun run;
+  ReportGate gate(s.report_after);
   const Candidate* searched = nullptr;  // the last search's candidates seen (explain)
   for (int u = 1; u <= max_updates; ++u) {
     if (u > 1) {
@@ -127,8 +128,9 @@ GlobalRun run_global_localization(const Map& map, std::shared_ptr<const RayCaste
     if (!run.within) run.first_within = -1;  // must stay within to the end
     if (stop_when_converged) {
       // As the robot does (SimRobot::localize): a pose is reported once the cloud has
-      // converged and the verdict finds no look-alike place; until then it looks on.
-      if (e.converged && !pf.awaiting_search() && !pf.ambiguity().ambiguous()) {
+      // converged and the verdict finds no look-alike place, on report_after scans in a
+      // row (report_gate.h); until then it looks on.
+      if (gate.update(e.converged && !pf.awaiting_search() && !pf.ambiguity().ambiguous())) {
         run.converged_at = u;
         break;
       }

@@ -27,6 +27,7 @@
 #include "client/sim/twin_places.h"
 #include "client/localization/lost_detector.h"
 #include "client/localization/particle_filter.h"
+#include "client/localization/report_gate.h"
 #include "common/map/map.h"
 #include "common/raycast/ray_caster.h"
 
@@ -63,6 +64,7 @@ struct TrialSettings {
   double false_alarm_drive = 0;  // metres of driving without a kidnap (0: none)
   double scan_period_s = 0.2;
   int recover_updates = 30;      // a recovery not within bounds by then failed; 0: no recovery
+  int report_after = 3;          // a recovery reports its pose once it holds this many scans (report_gate.h)
   LostDetectorOptions lost;
   // The sensor model's short_beyond for every preset (sensor_model.h); negative: the preset's.
   double short_beyond = -1;

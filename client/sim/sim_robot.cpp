@@ -6,6 +6,7 @@
 #include <spdlog/spdlog.h>
 
 #include "common/raycast/sweep_ray_caster.h"
+#include "client/localization/report_gate.h"
 #include "client/sim/localization_trials.h"
 #include "protocol/map_codec.h"
 
@@ -52,6 +53,7 @@ std::optional<int> SimRobot::localize(int max_updates) {
   }
   filter_->init_global(compass());
   bool was_ambiguous = false;
+  loc::ReportGate gate;
   for (int i = 1; i <= max_updates; ++i) {
     // Look around: turn 60 degrees in place (at 0.5 rad/s) between scans, so that six
     // turns show the filter the whole circle (ParticleFilterOptions::look_around_searches).
@@ -59,9 +61,15 @@ std::optional<int> SimRobot::localize(int max_updates) {
     const Odometry odo = drive_.step(0, rate, turn / rate);
     filter_->predict(odo);
     filter_->update(laser_.scan(drive_.pose()), compass());
-    if (filter_->awaiting_search()) continue;  // no estimate before the look around's search
+    if (filter_->awaiting_search()) {  // no estimate before the look around's search
+      gate.update(false);
+      continue;
+    }
     const loc::PoseEstimate e = filter_->estimate();
-    if (!e.converged) continue;  // nothing to report yet; the verdict below costs refinements
+    if (!e.converged) {  // nothing to report yet; the verdict below costs refinements
+      gate.update(false);
+      continue;
+    }
     // Look-alike places (identical rooms, a row of identical doors): say so and keep
     // localizing rather than report one of them as the pose.
     const loc::Ambiguity a = filter_->ambiguity();
@@ -72,8 +80,10 @@ std::optional<int> SimRobot::localize(int max_updates) {
                      a.places.size(), a.places[0].x, a.places[0].y, 100 * a.weights[0], a.places[1].x, a.places[1].y,
                      100 * a.weights[1]);
       was_ambiguous = true;
+      gate.update(false);
       continue;
     }
+    if (!gate.update(true)) continue;  // converged and alone: once it holds (report_gate.h)
     spdlog::info("localized after {} updates at ({:.2f}, {:.2f}, {:.1f} deg); truth ({:.2f}, {:.2f}, {:.1f} deg)", i,
                  e.pose.x, e.pose.y, loc::rad2deg(e.pose.theta), drive_.pose().x, drive_.pose().y,
                  loc::rad2deg(drive_.pose().theta));
