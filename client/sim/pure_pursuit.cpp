@@ -20,12 +20,28 @@ Command PurePursuit::command(const Pose& pose) {
   }
   // Skip waypoints already within the look-ahead circle.
   while (next_ + 1 < path_.size() && distance(p, path_[next_]) < o_.lookahead_m) ++next_;
-  const Point target = path_[next_];
+  // The target is the point one look-ahead ahead on the leg being driven (Coulter 1992),
+  // not the leg's far end: steering at a waypoint 10 m away turns so gently that the
+  // robot drifts sideways across a corridor before it lines up.
+  Point target = path_[next_];
+  if (next_ > 0) {
+    const Point a = path_[next_ - 1], b = path_[next_];
+    const double len = distance(a, b);
+    if (len > 1e-9) {
+      const double ux = (b.x - a.x) / len, uy = (b.y - a.y) / len;
+      const double along = std::clamp((p.x - a.x) * ux + (p.y - a.y) * uy, 0.0, len);
+      const double t = std::min(len, along + o_.lookahead_m);
+      target = {a.x + ux * t, a.y + uy * t};
+    }
+  }
   const double heading = std::atan2(target.y - p.y, target.x - p.x);
   const double alpha = localization::normalize_angle(heading - pose.theta);
   const double ld = std::max(distance(p, target), 1e-6);
   double v = std::min(o_.max_speed, distance(p, goal));       // slow down at the end
-  if (std::abs(alpha) > M_PI / 2) v = 0;                      // turn on the spot first
+  // Turn on the spot first while the heading is far off: an arc from 60 degrees off, to a
+  // target metres away, sweeps sideways into a corridor's wall (a robot that localized
+  // mid-look-around heads wherever its last turn left it).
+  if (std::abs(alpha) > o_.turn_in_place_rad) v = 0;
   double w = v > 0 ? 2 * v * std::sin(alpha) / ld : std::copysign(o_.max_turn_rate, alpha);
   w = std::clamp(w, -o_.max_turn_rate, o_.max_turn_rate);
   return {v, w, false};
