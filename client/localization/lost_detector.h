@@ -36,7 +36,7 @@ struct LostDetectorOptions {
   // place whose usual fit is low.
   // The floor sits below tracking's usual fit among 10 people (p5 0.75) and above a
   // look-alike corridor's, where a kidnapped robot's cloud re-locks and still agrees with
-  // 0.5-0.65 of the beams that tell (docs/localization.md, "Kidnapping": at 0.6 that
+  // 0.5-0.65 of the beams that tell (docs/localization.md, "The floor at 0.7": at 0.6 that
   // kidnap took 3.8 s to say lost, at 0.7 1.2 s).
   double ratio = 0.7;
   double floor = 0.7;
