@@ -7,6 +7,7 @@
 #include <random>
 #include <string>
 
+#include "client/localization/report_gate.h"
 #include "client/sim/drive_simulator.h"
 #include "client/sim/generated_maps.h"
 #include "client/sim/twin_places.h"
@@ -480,6 +481,18 @@ void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
                  "of %d, median %.1f s, max %.1f s\n",
                  b.detected, b.trials, percentile(b.detect_updates, 0.5) * s.scan_period_s,
                  percentile(b.detect_updates, 1.0) * s.scan_period_s);
+  }
+  if (s.report_after > 1 && s.recover_updates > 0 && k.detected > 0) {
+    // The recovery's baseline in the same run: the pose reported at the first scan on
+    // which the cloud has converged with no look-alike place (report_gate.h).
+    TrialSettings first = s;
+    first.report_after = 1;
+    first.false_alarm_drive = 0;
+    const KidnapResult b = run_kidnap_trials(map, world, first);
+    std::fprintf(out,
+                 "  baseline, the pose reported at the first settled scan (--report-after 1): recovered %d, wrong %d, "
+                 "no pose reported %d, of %d detected\n",
+                 b.recovered, b.wrong, b.detected - b.recovered - b.wrong, b.detected);
   }
   for (size_t i = 0; i < k.wrong_error_m.size(); ++i)
     std::fprintf(out, "  wrong recovery %zu: the reported pose %.2f m off (out of 0.3 m and 3 deg)\n", i + 1,

@@ -27,7 +27,6 @@
 #include "client/sim/twin_places.h"
 #include "client/localization/lost_detector.h"
 #include "client/localization/particle_filter.h"
-#include "client/localization/report_gate.h"
 #include "common/map/map.h"
 #include "common/raycast/ray_caster.h"
 

@@ -25,13 +25,11 @@ Command PurePursuit::command(const Pose& pose) {
   // robot drifts sideways across a corridor before it lines up.
   Point target = path_[next_];
   if (next_ > 0) {
-    const Point a = path_[next_ - 1], b = path_[next_];
-    const double len = distance(a, b);
-    if (len > 1e-9) {
-      const double ux = (b.x - a.x) / len, uy = (b.y - a.y) / len;
-      const double along = std::clamp((p.x - a.x) * ux + (p.y - a.y) * uy, 0.0, len);
-      const double t = std::min(len, along + o_.lookahead_m);
-      target = {a.x + ux * t, a.y + uy * t};
+    const Point a = path_[next_ - 1], leg = path_[next_] - a;
+    const double len = norm(leg);
+    if (len > 0) {
+      const double along = std::clamp(dot(p - a, leg) / len, 0.0, len);
+      target = a + (std::min(len, along + o_.lookahead_m) / len) * leg;
     }
   }
   const double heading = std::atan2(target.y - p.y, target.x - p.x);

@@ -12,7 +12,7 @@ struct PurePursuitOptions {
   double max_speed = 0.8;      // m/s
   double max_turn_rate = 1.2;  // rad/s
   double goal_tolerance_m = 0.2;
-  double turn_in_place_rad = 0.7854;  // 45 degrees: beyond this heading error, v = 0
+  double turn_in_place_rad = localization::kPi / 4;  // 45 degrees: beyond this heading error, v = 0
 };
 
 struct Command {

@@ -61,29 +61,21 @@ std::optional<int> SimRobot::localize(int max_updates) {
     const Odometry odo = drive_.step(0, rate, turn / rate);
     filter_->predict(odo);
     filter_->update(laser_.scan(drive_.pose()), compass());
-    if (filter_->awaiting_search()) {  // no estimate before the look around's search
-      gate.update(false);
-      continue;
-    }
+    // Nothing to report before the look around's search, nor before the cloud converges
+    // (the verdict below costs refinements).
     const loc::PoseEstimate e = filter_->estimate();
-    if (!e.converged) {  // nothing to report yet; the verdict below costs refinements
-      gate.update(false);
-      continue;
-    }
+    const bool converged = !filter_->awaiting_search() && e.converged;
     // Look-alike places (identical rooms, a row of identical doors): say so and keep
     // localizing rather than report one of them as the pose.
-    const loc::Ambiguity a = filter_->ambiguity();
-    if (a.ambiguous()) {
-      if (!was_ambiguous)
-        spdlog::warn("localizing: ambiguous, {} places look alike, the heaviest ({:.2f}, {:.2f}) with {:.0f} % of the "
-                     "weight, the next ({:.2f}, {:.2f}) with {:.0f} %; not reporting a pose",
-                     a.places.size(), a.places[0].x, a.places[0].y, 100 * a.weights[0], a.places[1].x, a.places[1].y,
-                     100 * a.weights[1]);
-      was_ambiguous = true;
-      gate.update(false);
-      continue;
-    }
-    if (!gate.update(true)) continue;  // converged and alone: once it holds (report_gate.h)
+    const loc::Ambiguity a = converged ? filter_->ambiguity() : loc::Ambiguity{};
+    if (a.ambiguous() && !was_ambiguous)
+      spdlog::warn("localizing: ambiguous, {} places look alike, the heaviest ({:.2f}, {:.2f}) with {:.0f} % of the "
+                   "weight, the next ({:.2f}, {:.2f}) with {:.0f} %; not reporting a pose",
+                   a.places.size(), a.places[0].x, a.places[0].y, 100 * a.weights[0], a.places[1].x, a.places[1].y,
+                   100 * a.weights[1]);
+    was_ambiguous = was_ambiguous || a.ambiguous();
+    // Converged and alone, on the gate's scans in a row (report_gate.h).
+    if (!gate.update(converged && !a.ambiguous())) continue;
     spdlog::info("localized after {} updates at ({:.2f}, {:.2f}, {:.1f} deg); truth ({:.2f}, {:.2f}, {:.1f} deg)", i,
                  e.pose.x, e.pose.y, loc::rad2deg(e.pose.theta), drive_.pose().x, drive_.pose().y,
                  loc::rad2deg(drive_.pose().theta));
