@@ -236,6 +236,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
+  app.add_flag("--exact-people", s.exact_people,
+               "tell the filter which returns the simulated people stopped instead of letting it guess them "
+               "(foreground.h): the ceiling of any people detector");
   app.add_option("--short-beyond", s.short_beyond,
                  "sensor model: beams stopped more than this many metres short count as this short, for every "
                  "preset (0: eq. 5 as written; negative: the preset's)")

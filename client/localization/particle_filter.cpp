@@ -406,10 +406,24 @@ void ParticleFilter::update(const std::vector<double>& ranges, std::optional<dou
   if (ranges.size() != beams_.size())
     throw std::invalid_argument("ParticleFilter::update: ranges: expected " + std::to_string(beams_.size()) +
                                 " beams, got " + std::to_string(ranges.size()));
+  correct(ranges, compass, foreground_of(ranges));
+}
+
+void ParticleFilter::update(const std::vector<double>& ranges, std::optional<double> compass,
+                            const std::vector<uint8_t>& foreground) {
+  if (ranges.size() != beams_.size() || foreground.size() != beams_.size())
+    throw std::invalid_argument("ParticleFilter::update: expected " + std::to_string(beams_.size()) +
+                                " beams, got " + std::to_string(ranges.size()) + " ranges and " +
+                                std::to_string(foreground.size()) + " foreground flags");
+  correct(ranges, compass, foreground);
+}
+
+void ParticleFilter::correct(const std::vector<double>& ranges, std::optional<double> compass,
+                             std::vector<uint8_t> front) {
   if (poses_.empty()) throw std::logic_error("ParticleFilter::update: no particles (call init_global or init_pose)");
   searched_at_.clear();
   if (from_global_) ++since_global_;
-  const std::vector<uint8_t> front = foreground_of(ranges);
+  last_foreground_ = front;
   if (options_.ambiguity.scans > 0) {
     if (recent_.size() >= options_.ambiguity.scans) recent_.erase(recent_.begin());
     recent_.push_back({since_recent_, ranges, compass, front});

@@ -228,6 +228,15 @@ class ParticleFilter {
   // reading; resamples when the weights call for it. Throws std::invalid_argument when
   // ranges.size() != NL, std::logic_error before any initialisation.
   void update(const std::vector<double>& ranges, std::optional<double> compass = std::nullopt);
+  // The same, where another detector (a leg tracker, a camera) tells which returns stand
+  // in front of the map: foreground[j] 1 where a person stopped beam j. It replaces
+  // foreground.h's guess wherever the options read one (the searches and their cloud's
+  // weighing, the verdict's residual, SensorModelOptions::short_only_foreground). Throws
+  // std::invalid_argument when foreground.size() != NL.
+  void update(const std::vector<double>& ranges, std::optional<double> compass, const std::vector<uint8_t>& foreground);
+  // The latest scan's returns taken as foreground (given, or guessed when an option reads
+  // them; empty when none was needed).
+  const std::vector<uint8_t>& last_foreground() const { return last_foreground_; }
 
   PoseEstimate estimate() const;
   // Whether the cloud holds two or more places that explain the scans alike (ambiguity.h,
@@ -335,6 +344,9 @@ class ParticleFilter {
   };
   // A scan's foreground, when an option will read it (else empty).
   std::vector<uint8_t> foreground_of(const std::vector<double>& ranges) const;
+  // update()'s body, with the scan's foreground decided.
+  void correct(const std::vector<double>& ranges, std::optional<double> compass, std::vector<uint8_t> front);
+  std::vector<uint8_t> last_foreground_;
   bool global_phase_ = false;
   std::optional<double> init_compass_;  // the reading of init_global
   Odometry since_scan_;                 // odometry since the last scan, in the global phase

@@ -64,6 +64,9 @@ struct TrialSettings {
   double scan_period_s = 0.2;
   int recover_updates = 30;      // a recovery not within bounds by then failed; 0: no recovery
   int report_after = 3;          // a recovery reports its pose once it holds this many scans (report_gate.h)
+  // The filter is told which returns the simulated people stopped (ParticleFilter::update's
+  // foreground) instead of guessing them (foreground.h): the ceiling of any people detector.
+  bool exact_people = false;
   LostDetectorOptions lost;
   // The sensor model's short_beyond for every preset (sensor_model.h); negative: the preset's.
   double short_beyond = -1;
