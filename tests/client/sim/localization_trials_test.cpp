@@ -85,6 +85,27 @@ TEST(LocalizationTrials, ExplainCountsTheBeamsPeopleHide) {
   EXPECT_LT(hidden, 0.8);
 }
 
+// TrialSettings::exact_people hands the filter the people the simulator placed instead
+// of foreground.h's guess (which misses some and flags a few door jambs): the same
+// trials, with the same draws, end elsewhere.
+TEST(LocalizationTrials, ExactPeopleReachTheFilter) {
+  Trials t("fast");
+  t.s.trials = 2;
+  t.s.laser.people = 5;
+  t.s.explain = false;
+  t.s.twins = false;
+  const GlobalResult guessed = run_global_trials(t.map, t.world, t.s);
+  t.s.exact_people = true;
+  const GlobalResult told = run_global_trials(t.map, t.world, t.s);
+  ASSERT_EQ(guessed.per_trial.size(), 2u);
+  ASSERT_EQ(told.per_trial.size(), 2u);
+  int differ = 0;
+  for (size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(guessed.per_trial[i].start.x, told.per_trial[i].start.x);  // the same trial
+    differ += guessed.per_trial[i].final_error != told.per_trial[i].final_error;
+  }
+  EXPECT_GE(differ, 1);
+}
 
 // In a hall of pillars on a grid, starts with a twin (twin_places.h) are called ambiguous
 // once the filter scores the search's places it lost (AmbiguityOptions::rivals); without
