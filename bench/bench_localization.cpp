@@ -187,6 +187,15 @@ int main(int argc, char** argv) {
                  "1: the ambiguity verdict also scores the last search's best places the cloud lost (ambiguity.h), "
                  "0: only the cloud's, for every preset but seed (default: the preset's)")
       ->check(CLI::Range(0, 1));
+  app.add_option("--drop-ruled-out-rivals", s.drop_ruled_out_rivals,
+                 "1: a rival worse than the converged cloud's place by more than --rival-drop-margin on a full "
+                 "window of recent scans is dropped for good (ambiguity.h), 0: it is judged again at every verdict, "
+                 "for every preset but seed (default: the preset's)")
+      ->check(CLI::Range(0, 1));
+  app.add_option("--rival-drop-margin", s.rival_drop_margin_z2,
+                 "per beam of the residual: how much worse than the cloud's place a rival must fit to be dropped "
+                 "(ambiguity.h), for every preset but seed (default: the preset's)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--register-scans", s.register_scans,
                  "1: the rivals are judged with each recent scan registered at the best place (ambiguity.h), 0: on the "
                  "scans as the odometry stitches them, for every preset but seed (default: the preset's)")

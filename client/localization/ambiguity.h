@@ -77,6 +77,16 @@ struct AmbiguityOptions {
   // too: then the best candidate may be the wrong one of the two.
   bool rivals = true;
   size_t max_rivals = 7;
+  // drop_ruled_out_rivals: a rival that fits worse than the converged cloud's place by
+  // more than rival_drop_margin_z2 on a full window of `scans` is dropped for good. The
+  // window slides: on a bland stretch of the path (a long straight wall) a place the
+  // scans now gone told apart comes back within the margin, and the verdict said
+  // ambiguous after 30 updates where it had not after 26. Off: among people the scans
+  // may favour a wrong place, and where the cloud held it, the true place was dropped
+  // and a pose 52.8 m off reported (docs/localization.md, "Rivals ruled out, and the
+  // window that forgets").
+  bool drop_ruled_out_rivals = false;
+  double rival_drop_margin_z2 = 0.5;
   double rival_sigma = 0.05;   // metres: the laser's noise, sigma_L (seed 000 section 4.1)
   double rival_max_z2 = 9;
   double rival_margin_z2 = 0.1;

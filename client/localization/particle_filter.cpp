@@ -11,6 +11,7 @@
 
 #include "client/localization/parallel.h"
 #include "client/localization/place_refinement.h"
+#include "client/localization/residual_judge.h"
 #include "client/localization/stitched_scan.h"
 #include "client/localization/turn_registration.h"
 #include "common/raycast/sweep_ray_caster.h"
@@ -509,6 +510,21 @@ void ParticleFilter::correct(const std::vector<double>& ranges, std::optional<do
   if (!global_phase_) history_.clear();
   const std::optional<double> heading = compass ? compass : init_compass_;
   if (from_global_ && options_.settle_after > 0 && since_global_ == options_.settle_after && heading) settle(*heading);
+  drop_ruled_out_rivals();
+}
+
+void ParticleFilter::drop_ruled_out_rivals() {
+  const AmbiguityOptions& o = options_.ambiguity;
+  if (!o.drop_ruled_out_rivals || rivals_.empty() || o.scans == 0 || recent_.size() < o.scans) return;
+  const PoseEstimate e = estimate();
+  if (!e.converged) return;  // the reference must be one place
+  const auto scans = residual_scans();
+  const ResidualJudge judge(o, stitched_residual(scans), o.register_scans ? registered_residual(scans)
+                                                                          : RegisteredResidual{});
+  const ResidualJudge::Reference reference = judge.reference_at(e.pose);
+  std::erase_if(rivals_, [&](const Pose& r) {
+    return distance(r, e.pose) > o.min_separation && judge.ruled_out(r, reference, o.rival_drop_margin_z2);
+  });
 }
 
 double ParticleFilter::weigh(double most, double roughening) {

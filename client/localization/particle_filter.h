@@ -365,6 +365,8 @@ class ParticleFilter {
   // carried by the odometry since: the ambiguity verdict scores them beside the cloud's.
   std::vector<Pose> rivals_;
   void keep_rivals(const std::vector<Candidate>& ranked, double beams);
+  // AmbiguityOptions::drop_ruled_out_rivals, once the window of recent scans is full.
+  void drop_ruled_out_rivals();
   // The last ambiguity.scans scans (their odometry from the scan before and compass
   // reading, as history_'s), for the ambiguity verdict; cleared by init_global and
   // init_pose, kept by set_particles and set_map.

@@ -92,4 +92,11 @@ std::vector<ResidualJudge::Kept> ResidualJudge::judge(const std::vector<Pose>& o
   return kept;
 }
 
+bool ResidualJudge::ruled_out(const Pose& other, const Reference& reference, double margin) const {
+  const double line = reference.place.score - margin;
+  const RefinedPlace r = refine_place(other, reference.judge, fine_);
+  if (r.score >= line) return false;
+  return !registered_ || register_at(r.pose, false).place.score < line;
+}
+
 }  // namespace fleetmap::localization

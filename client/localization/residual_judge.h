@@ -50,6 +50,10 @@ class ResidualJudge {
   std::vector<Kept> judge(const std::vector<Pose>& others, std::vector<Pose> held, const Reference& reference,
                           bool moved = false, const std::vector<Kept>& plain_kept = {}) const;
 
+  // Whether `other` fits worse than the reference by more than `margin` per beam, both
+  // refined on the reference's judge and (with registered scans) registered at itself.
+  bool ruled_out(const Pose& other, const Reference& reference, double margin) const;
+
  private:
   AmbiguityOptions o_;  // a copy: a judge may outlive the caller's options
   PlaceScore residual_;

@@ -573,6 +573,8 @@ ParticleFilterOptions trial_filter(const TrialSettings& base, const std::string&
   if (base.search_drops_foreground >= 0) f.search_drops_foreground = base.search_drops_foreground > 0;
   if (base.foreground_width > 0) f.foreground.max_width = base.foreground_width;
   if (base.rivals >= 0) f.ambiguity.rivals = base.rivals > 0;
+  if (base.drop_ruled_out_rivals >= 0) f.ambiguity.drop_ruled_out_rivals = base.drop_ruled_out_rivals > 0;
+  if (base.rival_drop_margin_z2 >= 0) f.ambiguity.rival_drop_margin_z2 = base.rival_drop_margin_z2;
   if (base.register_scans >= 0) f.ambiguity.register_scans = base.register_scans > 0;
   if (base.register_moves_place >= 0) f.ambiguity.register_moves_place = base.register_moves_place > 0;
   if (base.rival_margin_z2 >= 0) f.ambiguity.rival_margin_z2 = base.rival_margin_z2;

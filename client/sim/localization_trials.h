@@ -90,6 +90,9 @@ struct TrialSettings {
   double foreground_width = -1;
   // AmbiguityOptions::rivals: 1 on, 0 off, negative: the preset's.
   int rivals = -1;
+  // AmbiguityOptions::drop_ruled_out_rivals: 1 on, 0 off, negative: the preset's.
+  int drop_ruled_out_rivals = -1;
+  double rival_drop_margin_z2 = -1;  // AmbiguityOptions::rival_drop_margin_z2; negative: the preset's
   // AmbiguityOptions::register_scans: 1 on, 0 off, negative: the preset's.
   int register_scans = -1;
   // AmbiguityOptions::register_moves_place: 1 on, 0 off, negative: the preset's.

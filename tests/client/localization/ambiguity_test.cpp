@@ -5,6 +5,7 @@
 // between those two rooms (the Weight rule says ambiguous, the scans say the true room).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -429,6 +430,65 @@ TEST(Ambiguity, AnEvenSplitBetweenRoomsThatDifferIsNot) {
   ASSERT_EQ(b.places.size(), 2u);
   EXPECT_LT(distance(b.places[0], copy), 0.3);
   EXPECT_LT(distance(b.places[1], truth), 0.3);
+}
+
+// Rooms that differ by one short wall, seen only facing it: the robot looks around in
+// room A, faces A's short wall for ten more scans, then turns to face the bottom wall,
+// where both rooms look alike, and stays there ten scans. The window of recent scans then
+// holds only look-alike scans. A rival ruled out while the scans showed the difference
+// stays out (AmbiguityOptions::drop_ruled_out_rivals); judged anew on the window alone,
+// room B comes back. B's residual is 0.2-0.46 per beam worse than A's while the window
+// holds the short wall: dropped at a margin of 0.2, kept at 1.
+std::unique_ptr<ParticleFilter> look_then_face_the_bottom(bool drop, double margin, Pose& truth) {
+  const Map m = test::two_rooms(false);
+  const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
+  LaserSimulator laser(world, {}, 31);
+  ParticleFilterOptions o = ParticleFilterOptions::fast_search();
+  o.particles = 1000;
+  o.seed = 32;
+  o.threads = 1;
+  o.ambiguity.drop_ruled_out_rivals = drop;
+  o.ambiguity.rival_drop_margin_z2 = margin;
+  auto f = std::make_unique<ParticleFilter>(m, world, o);
+  truth = {5, 2.5, deg2rad(45.0)};
+  f->init_global(truth.theta);
+  f->update(laser.scan(truth), truth.theta);
+  const auto turn = [&](double by, int scans) {
+    for (int k = 0; k < scans; ++k) {
+      const Odometry u{0, 0, k == 0 ? by : 0.0};
+      truth = compose(truth, u);
+      f->predict(u);
+      f->update(laser.scan(truth), truth.theta);
+    }
+  };
+  for (int k = 0; k < 6; ++k) turn(deg2rad(60.0), 1);  // the look around: seven scans
+  turn(0, 10);                                          // facing A's short wall: a full window of it
+  turn(deg2rad(-135.0), 10);                            // facing the bottom wall
+  return f;
+}
+
+TEST(Ambiguity, ARivalRuledOutStaysOutOnceTheWindowForgetsWhy) {
+  const Pose copy_offset{12, 0, 0};
+  Pose truth;
+  const auto judged_anew = look_then_face_the_bottom(false, 0.2, truth);
+  // The premise: room B is a rival, and on the look-alike window alone it is a place.
+  const auto near_copy = [&](const Pose& p) { return distance(p, {truth.x + copy_offset.x, truth.y, truth.theta}) < 0.5; };
+  ASSERT_TRUE(std::any_of(judged_anew->rivals().begin(), judged_anew->rivals().end(), near_copy));
+  const Ambiguity anew = judged_anew->ambiguity();
+  ASSERT_TRUE(anew.ambiguous());
+  EXPECT_TRUE(std::any_of(anew.places.begin(), anew.places.end(), near_copy));
+
+  const auto dropped = look_then_face_the_bottom(true, 0.2, truth);
+  EXPECT_FALSE(std::any_of(dropped->rivals().begin(), dropped->rivals().end(), near_copy));
+  const Ambiguity a = dropped->ambiguity();
+  EXPECT_FALSE(a.ambiguous());
+  ASSERT_FALSE(a.places.empty());
+  EXPECT_LT(distance(a.places[0], truth), 0.3);
+
+  // A margin wider than the difference the scans showed keeps the rival.
+  const auto kept = look_then_face_the_bottom(true, 1.0, truth);
+  EXPECT_TRUE(std::any_of(kept->rivals().begin(), kept->rivals().end(), near_copy));
+  EXPECT_TRUE(kept->ambiguity().ambiguous());
 }
 
 }  // namespace
