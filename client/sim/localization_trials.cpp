@@ -57,13 +57,20 @@ std::vector<uint8_t> people_returns(const LaserSimulator& laser, const Pose& tru
   return stopped;
 }
 
-// The filter's update, told exactly which returns are people when the settings say so.
-void update_filter(ParticleFilter& pf, const LaserSimulator& laser, const TrialSettings& s, const Pose& truth,
-                   const std::vector<double>& ranges, double compass) {
-  if (s.exact_people && s.laser.people > 0)
-    pf.update(ranges, compass, people_returns(laser, truth, ranges));
-  else
+// The filter's update, told which returns are people when `people` holds them (empty: it
+// guesses them itself).
+void update_filter(ParticleFilter& pf, const std::vector<double>& ranges, double compass,
+                   const std::vector<uint8_t>& people) {
+  if (people.empty())
     pf.update(ranges, compass);
+  else
+    pf.update(ranges, compass, people);
+}
+
+// The people's returns when the filter is to be told them (TrialSettings::exact_people), else empty.
+std::vector<uint8_t> told_people(const LaserSimulator& laser, const TrialSettings& s, const Pose& truth,
+                                 const std::vector<double>& ranges) {
+  return s.exact_people && s.laser.people > 0 ? people_returns(laser, truth, ranges) : std::vector<uint8_t>{};
 }
 
 // One global localization as at boot (SimRobot::localize): a filter initialised from the
@@ -123,12 +130,15 @@ GlobalRun run_global_localization(const Map& map, std::shared_ptr<const RayCaste
     }
     run.path.push_back(truth);
     const std::vector<double> ranges = laser.scan(truth);
+    // Cast once for both uses: the noiseless scan is a ray per beam.
+    const std::vector<uint8_t> stopped = s.explain && s.laser.people > 0 ? people_returns(laser, truth, ranges)
+                                                                          : told_people(laser, s, truth, ranges);
     if (s.explain && s.laser.people > 0) {
-      const std::vector<uint8_t> stopped = people_returns(laser, truth, ranges);
       run.beams_hidden += std::count(stopped.begin(), stopped.end(), 1);
       run.beams_seen += ranges.size();
     }
-    update_filter(pf, laser, s, truth, ranges, compass_reading(truth, s.compass_sd, fo.compass_half_width, rng));
+    update_filter(pf, ranges, compass_reading(truth, s.compass_sd, fo.compass_half_width, rng),
+                  s.exact_people ? stopped : std::vector<uint8_t>{});
     if (s.explain && !pf.last_candidates().empty() && pf.last_candidates().data() != searched) {
       // A new search this update: its candidates are poses of the scan just taken.
       searched = pf.last_candidates().data();
@@ -325,8 +335,9 @@ TrackResult run_tracking_trial(const Map& map, std::shared_ptr<const RayCaster> 
     res.driven += st.driven;
     dead = compose(dead, st.odometry);
     pf.predict(st.odometry);
-    update_filter(pf, laser, s, st.truth, laser.scan(st.truth),
-                  compass_reading(st.truth, s.compass_sd, fo.compass_half_width, rng));
+    const std::vector<double> ranges = laser.scan(st.truth);
+    update_filter(pf, ranges, compass_reading(st.truth, s.compass_sd, fo.compass_half_width, rng),
+                  told_people(laser, s, st.truth, ranges));
     const PoseEstimate e = pf.estimate();
     const double err = distance(e.pose, st.truth), et = angle_diff(e.pose.theta, st.truth.theta);
     sq += err * err;
@@ -368,8 +379,8 @@ struct TrackedRobot {
     truth_ = st.truth;
     filter_->predict(st.odometry);
     const std::vector<double> scan = laser_.scan(st.truth);
-    update_filter(*filter_, laser_, s_, st.truth, scan,
-                  compass_reading(st.truth, s_.compass_sd, filter_->options().compass_half_width, rng_));
+    update_filter(*filter_, scan, compass_reading(st.truth, s_.compass_sd, filter_->options().compass_half_width, rng_),
+                  told_people(laser_, s_, st.truth, scan));
     detector_.update(scan_agreement(*world_, filter_->estimate().pose, beams_, scan, s_.lost));
     return st.driven;
   }
@@ -657,6 +668,24 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
                    "  of those, the last global search had the truth among the %zu candidates that get particles in "
                    "%d, ranked lower on cast rays in %d, not among its %zu candidates in %d\n",
                    f.search_clusters, g.truth_in_clusters, g.truth_ranked_out, f.search_candidates, g.truth_not_found);
+    // Baselines in the same run: the same trials as the filter has them without the setting.
+    const auto baseline = [&](const char* what, TrialSettings b) {
+      b.per_trial = nullptr;
+      b.explain = false;
+      const GlobalResult r = run_global_trials(map, world, b);
+      std::fprintf(out, "  baseline, %s: right answers %.1f %%; success %d, ambiguous %d, wrong %d of %d\n", what,
+                   100.0 * r.right() / std::max(1, r.trials), r.success, r.ambiguous, r.wrong, r.trials);
+    };
+    if (s.exact_people && s.laser.people > 0) {
+      TrialSettings b = s;
+      b.exact_people = false;
+      baseline("the people guessed by the filter (foreground.h)", b);
+    }
+    if (f.ambiguity.drop_ruled_out_rivals) {
+      TrialSettings b = s;
+      b.filter.ambiguity.drop_ruled_out_rivals = false;
+      baseline("the rivals judged anew on every window (--drop-ruled-out-rivals 0)", b);
+    }
     std::fflush(out);
   }
   if (tracking) {
