@@ -5,12 +5,13 @@
 
 namespace fleetmap::localization {
 
-double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vector<double>& beams,
-                      const std::vector<double>& ranges, const LostDetectorOptions& options) {
+ScanEvidence scan_evidence(const RayCaster& caster, const Pose& pose, const std::vector<double>& beams,
+                           const std::vector<double>& ranges, const LostDetectorOptions& options) {
   if (ranges.size() != beams.size())
-    throw std::invalid_argument("scan_agreement: expected one range per beam (" + std::to_string(beams.size()) +
+    throw std::invalid_argument("scan_evidence: expected one range per beam (" + std::to_string(beams.size()) +
                                 "), got " + std::to_string(ranges.size()));
-  if (beams.empty()) return 0;
+  ScanEvidence e;
+  if (beams.empty()) return e;
   std::vector<double> cast(beams.size());
   caster.cast_scan(pose.point(), pose.theta, beams, cast.data());
   // A beam stopped short is explained by something the map does not hold (people,
@@ -24,15 +25,34 @@ double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vect
   const std::vector<uint8_t> wall = options.count_unmapped_walls
                                         ? unmapped_wall_returns(ranges, beams, stopped_short, options.unmapped_wall)
                                         : std::vector<uint8_t>(beams.size(), 0);
-  size_t agree = 0, through = 0;
+  const double open_beyond = caster.options().rmax - tolerance;
   for (size_t j = 0; j < beams.size(); ++j) {
     const double d = ranges[j] - cast[j];
-    if (stopped_short[j]) through += wall[j];
-    else if (std::abs(d) <= tolerance) ++agree;
-    else if (d > 0) ++through;
+    if (stopped_short[j]) {
+      e.against += wall[j];
+    } else if (std::abs(d) <= tolerance) {
+      ++e.agree;
+      if (cast[j] >= open_beyond) ++e.open;
+    } else if (d > 0) {
+      ++e.against;
+    }
   }
-  if (agree + through == 0) return 1.0;  // every beam blocked: nothing contradicts the pose
-  return static_cast<double>(agree) / static_cast<double>(agree + through);
+  return e;
+}
+
+double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vector<double>& beams,
+                      const std::vector<double>& ranges, const LostDetectorOptions& options) {
+  if (beams.empty() && ranges.empty()) return 0;
+  return scan_evidence(caster, pose, beams, ranges, options).share(options.count_open_beams);
+}
+
+bool LostDetector::update(const ScanEvidence& evidence) {
+  if (evidence.telling(options_.count_open_beams) >= options_.min_telling_beams)
+    return update(evidence.share(options_.count_open_beams));
+  // A blind scan: the averages stay, and time goes on (a low fit that nothing
+  // contradicts stays low for as long).
+  if (updates_ == 0) return lost_;
+  return judge();
 }
 
 bool LostDetector::update(double agreement) {
@@ -45,6 +65,10 @@ bool LostDetector::update(double agreement) {
     if (!lost_) slow_ += options_.slow_alpha * (agreement - slow_);
   }
   ++updates_;
+  return judge();
+}
+
+bool LostDetector::judge() {
   const bool low = fast_ < options_.ratio * slow_ && fast_ < options_.floor;
   below_ = low ? below_ + 1 : 0;
   if (updates_ > options_.warmup && below_ >= options_.hold) lost_ = true;

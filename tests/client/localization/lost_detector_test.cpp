@@ -68,6 +68,67 @@ TEST(ScanAgreement, AWallTheMapLacksCountsAgainstThePose) {
   EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, person), 1.0);
 }
 
+// Beams that read nothing where the map has nothing within range are counted apart: with
+// a laser whose range is the median wall's in the room, every beam whose wall lies beyond
+// it (less the tolerance). The count comes from a caster of 15 m, not from the one scored.
+TEST(ScanEvidence, CountsTheOpenBeamsApartAndLeavesThemOutOnRequest) {
+  const RoomScan far;
+  std::vector<double> sorted = far.ranges;
+  std::sort(sorted.begin(), sorted.end());
+  const double reach = sorted[sorted.size() / 2];
+  const GridRayCaster near(far.room, {0.3, reach});
+  std::vector<double> ranges(far.beams.size());
+  near.cast_scan(far.at.point(), far.at.theta, far.beams, ranges.data());
+  // A person in front on ten beams: stopped short, neither agreeing nor against.
+  for (size_t j = 0; j < 10; ++j) ranges[j] = 0.9;
+  const ScanEvidence e = scan_evidence(near, far.at, far.beams, ranges);
+  size_t open_left = 0;
+  for (size_t j = 10; j < far.beams.size(); ++j) open_left += far.ranges[j] >= reach - 0.5 ? 1 : 0;
+  ASSERT_GT(open_left, 10u);
+  ASSERT_LT(open_left, far.beams.size() - 20);
+  EXPECT_EQ(e.agree, far.beams.size() - 10);
+  EXPECT_EQ(e.open, open_left);
+  EXPECT_EQ(e.against, 0u);
+  EXPECT_EQ(e.telling(true), far.beams.size() - 10);
+  EXPECT_EQ(e.telling(false), far.beams.size() - 10 - open_left);
+  // The share: with the open beams and without them.
+  const ScanEvidence mixed{10, 6, 4};
+  EXPECT_DOUBLE_EQ(mixed.share(true), 10.0 / 14.0);
+  EXPECT_DOUBLE_EQ(mixed.share(false), 4.0 / 8.0);
+  EXPECT_DOUBLE_EQ(ScanEvidence{}.share(true), 1.0);
+}
+
+// A blind scan (no beam tells) leaves the averages as they are but counts towards hold:
+// scans that told the pose wrong, then scans a crowd blocks whole, are lost. Counted as
+// full agreement (min_telling_beams 0, as before), the blocked scans lift the fast average
+// back over the bounds and the loss goes unsaid.
+TEST(LostDetector, BlindScansKeepTheAveragesAndLetTimeRun) {
+  const ScanEvidence good{100, 0, 2}, wrong{0, 0, 20}, blind{};
+  for (size_t min_telling : {size_t{1}, size_t{0}}) {
+    LostDetectorOptions o;
+    o.min_telling_beams = min_telling;
+    LostDetector d(o);
+    for (int i = 0; i < 30; ++i) d.update(good);
+    d.update(wrong);
+    d.update(wrong);
+    const double fast = d.fast();
+    ASSERT_LT(fast, o.floor);
+    ASSERT_FALSE(d.lost());
+    bool lost = false;
+    for (int i = 0; i < 10; ++i) lost = d.update(blind) || lost;
+    if (min_telling == 1) {
+      EXPECT_TRUE(lost);
+      EXPECT_DOUBLE_EQ(d.fast(), fast);
+    } else {
+      EXPECT_FALSE(lost);
+      EXPECT_GT(d.fast(), o.floor);
+    }
+  }
+  // Blind from the start: nothing to judge, never lost.
+  LostDetector d;
+  for (int i = 0; i < 50; ++i) EXPECT_FALSE(d.update(blind));
+}
+
 TEST(LostDetector, StaysFoundOnAGoodOrMerelyHarderPlace) {
   LostDetector d;
   for (int i = 0; i < 100; ++i) EXPECT_FALSE(d.update(i % 5 == 0 ? 0.8 : 0.95)) << i;
