@@ -232,6 +232,11 @@ int main(int argc, char** argv) {
                  "below ratio x the slow average) for hold updates")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--lost-ratio", s.lost.ratio,
+                 "the lost detector's ratio: lost when the fast average stays below this x the slow one (and below "
+                 "the floor) for hold updates")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   app.add_option("--lost-hold", s.lost.hold, "updates the lost detector's fast average must stay low")
       ->capture_default_str()
       ->check(CLI::Range(1, 100));

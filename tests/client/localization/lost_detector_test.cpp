@@ -99,7 +99,7 @@ TEST(ScanEvidence, CountsTheOpenBeamsApartAndLeavesThemOutOnRequest) {
 }
 
 // A blind scan (no beam tells) leaves the averages as they are but counts towards hold:
-// scans that told the pose wrong, then scans a crowd blocks whole, are lost. Counted as
+// a scan that told the pose wrong, then scans a crowd blocks whole, are lost. Counted as
 // full agreement (min_telling_beams 0, as before), the blocked scans lift the fast average
 // back over the bounds and the loss goes unsaid.
 TEST(LostDetector, BlindScansKeepTheAveragesAndLetTimeRun) {
@@ -107,12 +107,14 @@ TEST(LostDetector, BlindScansKeepTheAveragesAndLetTimeRun) {
   for (size_t min_telling : {size_t{1}, size_t{0}}) {
     LostDetectorOptions o;
     o.min_telling_beams = min_telling;
+    o.ratio = 0.8;
+    o.floor = 0.75;
     LostDetector d(o);
     for (int i = 0; i < 30; ++i) d.update(good);
-    d.update(wrong);
-    d.update(wrong);
+    d.update(wrong);  // the fast average falls to 0.69, below both bounds
     const double fast = d.fast();
     ASSERT_LT(fast, o.floor);
+    ASSERT_LT(fast, o.ratio * d.slow());
     ASSERT_FALSE(d.lost());
     bool lost = false;
     for (int i = 0; i < 10; ++i) lost = d.update(blind) || lost;
@@ -132,9 +134,12 @@ TEST(LostDetector, BlindScansKeepTheAveragesAndLetTimeRun) {
 TEST(LostDetector, StaysFoundOnAGoodOrMerelyHarderPlace) {
   LostDetector d;
   for (int i = 0; i < 100; ++i) EXPECT_FALSE(d.update(i % 5 == 0 ? 0.8 : 0.95)) << i;
-  // A harder stretch (glass walls): the fit drops to 0.75 and stays there. Above the
+  // A harder stretch (glass walls): the fit drops to 0.78 and stays there. Above the
   // floor: not lost.
-  for (int i = 0; i < 100; ++i) EXPECT_FALSE(d.update(0.75)) << i;
+  for (int i = 0; i < 100; ++i) EXPECT_FALSE(d.update(0.78)) << i;
+  // Lower still, where the slow average has learnt the place: not lost either, as the
+  // fast one stays above ratio x the slow.
+  for (int i = 0; i < 300; ++i) EXPECT_FALSE(d.update(i < 100 ? 0.74 : 0.66)) << i;
 }
 
 TEST(LostDetector, ALookAlikeCorridorIsLostWithinSixScans) {
