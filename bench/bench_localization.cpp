@@ -254,7 +254,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--lost-min-telling", s.lost.min_telling_beams,
                  "scans with fewer beams that agree or disagree leave the lost detector as it was (0: every scan counts)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_flag("--exact-people", s.exact_people,

@@ -40,12 +40,6 @@ ScanEvidence scan_evidence(const RayCaster& caster, const Pose& pose, const std:
   return e;
 }
 
-double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vector<double>& beams,
-                      const std::vector<double>& ranges, const LostDetectorOptions& options) {
-  if (beams.empty() && ranges.empty()) return 0;
-  return scan_evidence(caster, pose, beams, ranges, options).share(options.count_open_beams);
-}
-
 bool LostDetector::update(const ScanEvidence& evidence) {
   if (evidence.telling(options_.count_open_beams) >= options_.min_telling_beams)
     return update(evidence.share(options_.count_open_beams));

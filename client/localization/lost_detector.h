@@ -89,9 +89,6 @@ struct ScanEvidence {
 // corridor after a kidnap kept 56 such beams of 131 out of the figure).
 ScanEvidence scan_evidence(const RayCaster& caster, const Pose& pose, const std::vector<double>& beams,
                            const std::vector<double>& ranges, const LostDetectorOptions& options = {});
-// scan_evidence's share (options.count_open_beams).
-double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vector<double>& beams,
-                      const std::vector<double>& ranges, const LostDetectorOptions& options = {});
 
 class LostDetector {
  public:

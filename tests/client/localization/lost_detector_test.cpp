@@ -28,6 +28,12 @@ struct RoomScan {
   RoomScan() { caster.cast_scan(at.point(), at.theta, beams, ranges.data()); }
 };
 
+// The share the detector takes from a scan (LostDetector::update).
+double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vector<double>& beams,
+                      const std::vector<double>& ranges, const LostDetectorOptions& options = {}) {
+  return scan_evidence(caster, pose, beams, ranges, options).share(options.count_open_beams);
+}
+
 TEST(ScanAgreement, CountsTheBeamsWithinTheTolerance) {
   auto [room, caster, beams, at, ranges] = RoomScan();
   EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, ranges), 1.0);
