@@ -237,6 +237,11 @@ int main(int argc, char** argv) {
                  "the floor) for hold updates")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--lost-tolerance", s.lost.tolerance,
+                 "metres: a beam agrees with the estimate when its reading is within this of the ray cast from it "
+                 "(the lost detector)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   app.add_option("--lost-hold", s.lost.hold, "updates the lost detector's fast average must stay low")
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
