@@ -253,10 +253,11 @@ int main(int argc, char** argv) {
                  "1: the lost detector counts beams stopped short on a straight piece longer than people against the "
                  "pose (a wall the map does not hold there; unmapped_walls.h), 0: it leaves every beam stopped short out")
       ->capture_default_str();
-  app.add_option("--lost-open-beams", s.lost.count_open_beams,
-                 "1: a beam that reads nothing where the map has nothing within range agrees with the pose, 0: it "
-                 "tells nothing")
-      ->capture_default_str();
+  app.add_option("--lost-open-weight", s.lost.open_beam_weight,
+                 "how much of a beam that agrees a beam counts that reads nothing where the map has nothing within "
+                 "range (the lost detector; 1: a whole one, 0: it tells nothing)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   app.add_option("--lost-min-telling", s.lost.min_telling_beams,
                  "scans with fewer beams that agree or disagree leave the lost detector as it was (0: every scan counts)")
       ->capture_default_str()

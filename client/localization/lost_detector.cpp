@@ -41,8 +41,8 @@ ScanEvidence scan_evidence(const RayCaster& caster, const Pose& pose, const std:
 }
 
 bool LostDetector::update(const ScanEvidence& evidence) {
-  if (evidence.telling(options_.count_open_beams) >= options_.min_telling_beams)
-    return update(evidence.share(options_.count_open_beams));
+  if (evidence.telling(options_.open_beam_weight) >= static_cast<double>(options_.min_telling_beams))
+    return update(evidence.share(options_.open_beam_weight));
   // A blind scan: the averages stay, and time goes on (a low fit that nothing
   // contradicts stays low for as long).
   if (updates_ == 0) return lost_;

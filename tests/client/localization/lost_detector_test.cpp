@@ -31,7 +31,7 @@ struct RoomScan {
 // The share the detector takes from a scan (LostDetector::update).
 double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vector<double>& beams,
                       const std::vector<double>& ranges, const LostDetectorOptions& options = {}) {
-  return scan_evidence(caster, pose, beams, ranges, options).share(options.count_open_beams);
+  return scan_evidence(caster, pose, beams, ranges, options).share(options.open_beam_weight);
 }
 
 TEST(ScanAgreement, CountsTheBeamsWithinTheTolerance) {
@@ -95,13 +95,34 @@ TEST(ScanEvidence, CountsTheOpenBeamsApartAndLeavesThemOutOnRequest) {
   EXPECT_EQ(e.agree, far.beams.size() - 10);
   EXPECT_EQ(e.open, open_left);
   EXPECT_EQ(e.against, 0u);
-  EXPECT_EQ(e.telling(true), far.beams.size() - 10);
-  EXPECT_EQ(e.telling(false), far.beams.size() - 10 - open_left);
+  EXPECT_DOUBLE_EQ(e.telling(1.0), static_cast<double>(far.beams.size() - 10));
+  EXPECT_DOUBLE_EQ(e.telling(0.0), static_cast<double>(far.beams.size() - 10 - open_left));
   // The share: with the open beams and without them.
   const ScanEvidence mixed{10, 6, 4};
-  EXPECT_DOUBLE_EQ(mixed.share(true), 10.0 / 14.0);
-  EXPECT_DOUBLE_EQ(mixed.share(false), 4.0 / 8.0);
-  EXPECT_DOUBLE_EQ(ScanEvidence{}.share(true), 1.0);
+  EXPECT_DOUBLE_EQ(mixed.share(1.0), 10.0 / 14.0);
+  EXPECT_DOUBLE_EQ(mixed.share(0.0), 4.0 / 8.0);
+  EXPECT_DOUBLE_EQ(ScanEvidence{}.share(1.0), 1.0);
+  // At a quarter of a beam each: 4 + 4 + 1.5 telling, 5.5 agreeing.
+  EXPECT_DOUBLE_EQ(mixed.telling(0.25), 9.5);
+  EXPECT_DOUBLE_EQ(mixed.share(0.25), 5.5 / 9.5);
+}
+
+// A kidnapped robot whose estimate stands on open ground (the campus among 30 people,
+// docs/localization.md "Open beams at a quarter"): most beams that agree are open ones,
+// and a few per scan pass through walls of the map. Open beams counted whole outweigh
+// those; counted at a quarter they do not, while tracking right, with walls in view,
+// stays found either way.
+TEST(LostDetector, OpenGroundDoesNotOutweighBeamsAgainstTheEstimate) {
+  const ScanEvidence tracking{60, 40, 1}, kidnapped{30, 29, 4};
+  for (double weight : {1.0, 0.25}) {
+    LostDetectorOptions o;
+    o.open_beam_weight = weight;
+    LostDetector d(o);
+    for (int i = 0; i < 100; ++i) EXPECT_FALSE(d.update(tracking)) << weight;
+    bool lost = false;
+    for (int i = 0; i < 10; ++i) lost = d.update(kidnapped) || lost;
+    EXPECT_EQ(lost, weight < 1.0) << "open beams weighing " << weight;
+  }
 }
 
 // A blind scan (no beam tells) leaves the averages as they are but counts towards hold:
