@@ -504,7 +504,7 @@ void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
                s.recover_updates > 0 ? k.detected - k.recovered - k.wrong : 0, k.false_alarms, hours, k.driven_without_kidnap,
                k.alarms_while_off, seconds_since(t0));
   // The detector's baselines in the same run: the same kidnaps, detection only (no hour
-  // of driving), with one rule of the detector undone.
+  // of driving), with a rule of the detector undone.
   const auto detection_baseline = [&](const char* what, const auto& undo) {
     TrialSettings before = s;
     undo(before.lost);
@@ -521,6 +521,12 @@ void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
   if (s.kidnaps > 0 && s.lost.min_telling_beams > 0)
     detection_baseline("a scan on which no beam tells counted as full agreement (--lost-min-telling 0)",
                        [](LostDetectorOptions& o) { o.min_telling_beams = 0; });
+  if (s.kidnaps > 0 && (s.lost.open_beam_weight < 1 || s.lost.fast_alpha != 0.3))
+    detection_baseline("open beams counted whole and the fast average at 0.3 (--lost-open-weight 1 --lost-fast-alpha 0.3)",
+                       [](LostDetectorOptions& o) {
+                         o.open_beam_weight = 1;
+                         o.fast_alpha = 0.3;
+                       });
   if (s.report_after > 1 && s.recover_updates > 0 && k.detected > 0) {
     // The recovery's baseline in the same run: the pose reported at the first scan on
     // which the cloud has converged with no look-alike place (report_gate.h).
