@@ -263,6 +263,11 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
+  app.add_option("--drive-min-walls", s.drive_min_walls,
+                 "every drive keeps where this share of 36 rays around meets a wall within the laser's range "
+                 "(0: the robot may wander off the map into ground no scan sees)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
   app.add_flag("--exact-people", s.exact_people,
                "tell the filter which returns the simulated people stopped instead of letting it guess them "

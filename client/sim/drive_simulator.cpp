@@ -21,6 +21,24 @@ bool WanderDriver::clear(double heading) const {
   return true;
 }
 
+bool WanderDriver::mapped(double heading) const {
+  if (options_.min_walls_around <= 0) return true;
+  const Point end = pose_.point() + options_.lookahead * Point{std::cos(heading), std::sin(heading)};
+  // Remembered per 0.25 m cell: the drive asks of the same ground again and again.
+  const auto cell = (static_cast<int64_t>(std::floor(end.x * 4)) << 32) ^ static_cast<int64_t>(std::floor(end.y * 4) + 0x7fffffff);
+  if (const auto it = mapped_cells_.find(cell); it != mapped_cells_.end()) return it->second;
+  static const std::vector<double> around = [] {
+    std::vector<double> a(36);
+    for (int k = 0; k < 36; ++k) a[k] = k * kPi / 18;
+    return a;
+  }();
+  double ranges[36];
+  world_->cast_scan(end, 0.0, around, ranges);  // the laser's own sweep: cheaper than 36 casts
+  const double rmax = world_->options().rmax;
+  const auto walls = std::count_if(ranges, ranges + 36, [&](double r) { return r < rmax; });
+  return mapped_cells_[cell] = static_cast<double>(walls) >= options_.min_walls_around * 36;
+}
+
 DriveStep WanderDriver::step() {
   if (steps_++ < options_.look_around_steps) {
     const Pose before = pose_;
@@ -30,16 +48,22 @@ DriveStep WanderDriver::step() {
   std::normal_distribution<double> jitter(0.0, options_.max_turn / 3);
   wander_ = std::clamp(wander_ + jitter(rng_), -options_.max_turn, options_.max_turn);
   double turn = wander_, forward = options_.step;
-  if (!clear(pose_.theta + turn)) {
+  const auto open_and_mapped = [&](double h) { return clear(h) && mapped(h); };
+  const auto open = [&](double h) { return clear(h); };
+  if (!open_and_mapped(pose_.theta + turn)) {
     // The smallest turn that clears the way, trying the wander's side first; turning
     // more than max_turn happens in place.
     const double side = wander_ >= 0 ? 1.0 : -1.0;
     const double inc = deg2rad(15.0);
-    turn = kPi;
-    for (int k = 1; k <= 12; ++k) {
-      if (clear(pose_.theta + side * k * inc)) { turn = side * k * inc; break; }
-      if (clear(pose_.theta - side * k * inc)) { turn = -side * k * inc; break; }
-    }
+    const auto smallest_turn = [&](const auto& passes) {
+      for (int k = 1; k <= 12; ++k) {
+        if (passes(pose_.theta + side * k * inc)) return side * k * inc;
+        if (passes(pose_.theta - side * k * inc)) return -side * k * inc;
+      }
+      return kPi;
+    };
+    turn = smallest_turn(open_and_mapped);
+    if (turn == kPi && options_.min_walls_around > 0) turn = open(pose_.theta + wander_) ? wander_ : smallest_turn(open);
     if (std::fabs(turn) > options_.max_turn) {
       turn = std::clamp(turn, -deg2rad(45.0), deg2rad(45.0));
       forward = 0;

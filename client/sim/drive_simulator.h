@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <random>
+#include <unordered_map>
 #include <vector>
 
 #include "client/localization/free_space.h"
@@ -22,6 +23,12 @@ struct DriveOptions {
   double lookahead = 1.5;              // metres of clear way wanted ahead
   double robot_radius = 0.3;           // metres
   MotionNoise odometry{0.005, 0.0005, 0.0025, 0.0005};  // of the reported odometry
+  // Drive where the map is. A way counts as clear only if, from its end, at least this
+  // share of 36 rays around meets a wall within the laser's range: a fleet's robots
+  // follow paths planned on their map, and do not leave it through an open door into
+  // ground its laser cannot see. When no way around passes, any open way does (never
+  // stuck). 0: off, the robot wanders anywhere open.
+  double min_walls_around = 0;
   // Global localization's look around: the first look_around_steps steps turn in place
   // by look_around_turn each, so that the laser (180 degrees) sees behind the robot too.
   int look_around_steps = 0;
@@ -42,13 +49,15 @@ class WanderDriver {
   const Pose& pose() const { return pose_; }
 
  private:
-  bool clear(double heading) const;  // lookahead free along heading, robot's width
+  bool clear(double heading) const;   // lookahead free along heading, robot's width
+  bool mapped(double heading) const;  // the way's end sees walls (min_walls_around)
 
   std::shared_ptr<const RayCaster> world_;
   DriveOptions options_;
   MotionModel odometry_;
   Pose pose_;
   double wander_ = 0;  // current turn per step, radians
+  mutable std::unordered_map<int64_t, bool> mapped_cells_;  // mapped(), by 0.25 m cell of the way's end
   int steps_ = 0;
   std::mt19937_64 rng_;
 };

@@ -53,6 +53,10 @@ struct TrialSettings {
   double look_around_turn = deg2rad(60.0);
   double drive = 200;        // metres of the tracking drive
   double min_hit_fraction = 0.5;
+  // Every drive keeps where at least this share of 36 rays around meets a wall within the
+  // laser's range (DriveOptions::min_walls_around; the starts' min_hit_fraction). 0: the
+  // robot may wander off the map into ground no scan sees, as before 2026-12-06.
+  double drive_min_walls = 0.5;
   double compass_sd = deg2rad(1.0);  // the compass's own error (clamped to +-3 degrees)
   uint64_t seed = 1;
   std::FILE* per_trial = nullptr;  // a line per global trial (start, outcome) when set
@@ -210,8 +214,11 @@ struct KidnapResult {
   // estimate more than 1 m off when the detector spoke): a true alarm of another cause,
   // counted apart so that neither hides the other.
   int alarms_while_off = 0;
+  int alarms_of_right_pose = 0;  // of those, said of an estimate within 0.3 m and 3 degrees
+  int slips_unsaid = 0;          // the estimate more than 1 m off for 3 s, and no "lost" said
   std::vector<double> alarm_error_m, alarm_error_deg;  // the estimate's error at each false alarm
   double driven_without_kidnap = 0;  // metres of driving in which a "lost" is a false alarm
+  int scans_without_kidnap = 0, blind_scans = 0;  // of that driving; blind: under a tenth of the beams on a wall
 };
 
 // Per beam: closer fits than this are a tie (settling's measurement, docs/localization.md).

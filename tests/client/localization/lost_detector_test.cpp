@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 
+#include "client/sim/drive_simulator.h"
 #include "client/sim/laser_simulator.h"
 #include "client/sim/localization_trials.h"
 #include "common/raycast/grid_ray_caster.h"
@@ -264,6 +265,30 @@ TEST(KidnapTrials, OnTheRoomEveryKidnapIsDetectedAndNoDriveRaisesAFalseAlarm) {
   ASSERT_EQ(k.detect_updates.size(), 4u);
   for (int u : k.detect_updates) EXPECT_LE(u * s.scan_period_s, 3.0);  // within 3 s
   EXPECT_GE(k.driven_without_kidnap, 4 * 5 + 40);
+}
+
+// A detector that cries wolf (both bounds above any fit) says "lost" every few scans of a
+// filter that tracks right: each cry is a false alarm of a right pose, none of a lost
+// filter, and the drive has no slip left unsaid.
+TEST(KidnapTrials, ADetectorThatCriesWolfIsCountedAsFalseAlarmsOfARightPose) {
+  const Map room = test::room_map();
+  std::shared_ptr<const RayCaster> world = make_fast_ray_caster(room, RayCasterOptions{0.3, 15.0});
+  TrialSettings s;
+  s.filter = *preset("robust");
+  s.filter.particles = 300;
+  s.recover_updates = 0;
+  s.false_alarm_drive = 20;
+  s.lost.floor = 1.1;
+  s.lost.ratio = 2.0;
+  s.seed = 5;
+  const KidnapResult k = run_kidnap_trials(room, world, s);
+  const int scans = static_cast<int>(20 / DriveOptions{}.step);
+  EXPECT_GE(k.false_alarms, scans / (s.lost.warmup + s.lost.hold) / 2);
+  EXPECT_EQ(k.alarms_of_right_pose, k.false_alarms);
+  EXPECT_EQ(k.alarms_while_off, 0);
+  EXPECT_EQ(k.slips_unsaid, 0);
+  EXPECT_GE(k.scans_without_kidnap, scans);
+  EXPECT_EQ(k.blind_scans, 0);  // a closed room: every scan sees walls
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // robot keeps clear of walls, drives, and its odometry is noisy but close to its motion.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -55,6 +56,37 @@ TEST(WanderDriver, LooksAroundInPlaceBeforeDriving) {
   double driven = 0;
   for (int k = 0; k < 4; ++k) driven += driver.step().driven;
   EXPECT_GT(driven, 0.0);
+}
+
+// A 10 m x 10 m room open on its east side onto ground with nothing in it. With the rule
+// (half the rays around meet a wall within the laser's 15 m), the robot keeps by the room,
+// less than a metre out of it; without it, it wanders off into the empty ground.
+TEST(WanderDriver, KeepsWhereItsMapIsWhenAsked) {
+  Map m;
+  m.border = Border::from_rect({-100, -100, 100, 100});
+  Obstacle u;
+  u.id = 1;
+  u.type = ShapeType::OpenPolygon;
+  u.segments = {test::wall({10, 0}, {0, 0}), test::wall({0, 0}, {0, 10}), test::wall({0, 10}, {10, 10})};
+  m.obstacles = {u};
+  m.compute_bounds();
+  const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
+  const auto farthest_out = [&](double min_walls) {
+    DriveOptions o;
+    o.min_walls_around = min_walls;
+    WanderDriver driver(world, {5, 5, 0}, o, 11);
+    double out = 0, driven = 0;
+    for (int k = 0; k < 2000; ++k) {
+      const DriveStep st = driver.step();
+      const double dx = std::max({0.0, -st.truth.x, st.truth.x - 10}), dy = std::max({0.0, -st.truth.y, st.truth.y - 10});
+      out = std::max(out, std::hypot(dx, dy));
+      driven += st.driven;
+    }
+    EXPECT_GT(driven, 300.0) << min_walls;  // it drives, it is not stuck turning
+    return out;
+  };
+  EXPECT_LT(farthest_out(0.5), 1.0);
+  EXPECT_GT(farthest_out(0.0), 20.0);
 }
 
 TEST(PickStartPose, HasClearanceAndHits) {
