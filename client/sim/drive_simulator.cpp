@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -25,7 +27,9 @@ bool WanderDriver::mapped(double heading) const {
   if (options_.min_walls_around <= 0) return true;
   const Point end = pose_.point() + options_.lookahead * Point{std::cos(heading), std::sin(heading)};
   // Remembered per 0.25 m cell: the drive asks of the same ground again and again.
-  const auto cell = (static_cast<int64_t>(std::floor(end.x * 4)) << 32) ^ static_cast<int64_t>(std::floor(end.y * 4) + 0x7fffffff);
+  const auto ix = static_cast<uint32_t>(static_cast<int32_t>(std::floor(end.x * 4)));
+  const auto iy = static_cast<uint32_t>(static_cast<int32_t>(std::floor(end.y * 4)));
+  const uint64_t cell = (uint64_t{ix} << 32) | iy;
   if (const auto it = mapped_cells_.find(cell); it != mapped_cells_.end()) return it->second;
   static const std::vector<double> around = [] {
     std::vector<double> a(36);
@@ -55,15 +59,17 @@ DriveStep WanderDriver::step() {
     // more than max_turn happens in place.
     const double side = wander_ >= 0 ? 1.0 : -1.0;
     const double inc = deg2rad(15.0);
-    const auto smallest_turn = [&](const auto& passes) {
+    const auto smallest_turn = [&](const auto& passes) -> std::optional<double> {
       for (int k = 1; k <= 12; ++k) {
         if (passes(pose_.theta + side * k * inc)) return side * k * inc;
         if (passes(pose_.theta - side * k * inc)) return -side * k * inc;
       }
-      return kPi;
+      return std::nullopt;
     };
-    turn = smallest_turn(open_and_mapped);
-    if (turn == kPi && options_.min_walls_around > 0) turn = open(pose_.theta + wander_) ? wander_ : smallest_turn(open);
+    std::optional<double> found = smallest_turn(open_and_mapped);
+    // Nowhere mapped to go: any open way, the wander's own first.
+    if (!found && options_.min_walls_around > 0) found = open(pose_.theta + wander_) ? wander_ : smallest_turn(open);
+    turn = found.value_or(kPi);
     if (std::fabs(turn) > options_.max_turn) {
       turn = std::clamp(turn, -deg2rad(45.0), deg2rad(45.0));
       forward = 0;

@@ -57,7 +57,7 @@ class WanderDriver {
   MotionModel odometry_;
   Pose pose_;
   double wander_ = 0;  // current turn per step, radians
-  mutable std::unordered_map<int64_t, bool> mapped_cells_;  // mapped(), by 0.25 m cell of the way's end
+  mutable std::unordered_map<uint64_t, bool> mapped_cells_;  // mapped(), by 0.25 m cell of the way's end
   int steps_ = 0;
   std::mt19937_64 rng_;
 };

@@ -404,7 +404,7 @@ struct TrackedRobot {
   std::unique_ptr<ParticleFilter> filter_;
   LostDetector detector_;
   Pose truth_;
-  bool blind_ = false;  // the last scan had under a tenth of its beams on a wall
+  bool blind_ = false;  // under a tenth of the last scan's beams returned (from a wall or a person)
   int off_scans_ = 0;  // scans in a row with the estimate more than 1 m off, nothing said
 };
 
@@ -521,7 +521,7 @@ void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
                "wrong %d, no pose reported %d; false alarms %d in %.2f h of driving (%.0f m) (goal 0 per hour), of which %d with the "
                "estimate more than 1 m off (the filter had lost the robot) and %d of a pose within 0.3 m and 3 deg; "
                "slips of more than 1 m not said within 3 s %d; %.1f %% of the scans blind (under a tenth of the beams "
-               "on a wall); %.0f s\n",
+               "returned; a person's return counts); %.0f s\n",
                k.trials, s.laser.people, s.kidnap_after, k.detected, 100.0 * k.detected / std::max(1, k.trials),
                percentile(k.detect_updates, 0.5) * s.scan_period_s, percentile(k.detect_updates, 0.95) * s.scan_period_s,
                k.detect_updates.empty() ? NAN : *std::max_element(k.detect_updates.begin(), k.detect_updates.end()) * s.scan_period_s,

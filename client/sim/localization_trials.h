@@ -218,7 +218,7 @@ struct KidnapResult {
   int slips_unsaid = 0;          // the estimate more than 1 m off for 3 s, and no "lost" said
   std::vector<double> alarm_error_m, alarm_error_deg;  // the estimate's error at each false alarm
   double driven_without_kidnap = 0;  // metres of driving in which a "lost" is a false alarm
-  int scans_without_kidnap = 0, blind_scans = 0;  // of that driving; blind: under a tenth of the beams on a wall
+  int scans_without_kidnap = 0, blind_scans = 0;  // of that driving; blind: under a tenth of the beams returned
 };
 
 // Per beam: closer fits than this are a tie (settling's measurement, docs/localization.md).
