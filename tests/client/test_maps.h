@@ -1,5 +1,6 @@
 #pragma once
 // Small maps built in code for the localization tests.
+#include <utility>
 #include <vector>
 
 #include "common/map/map.h"
@@ -7,6 +8,19 @@
 namespace fleetmap::localization::test {
 
 inline Segment wall(Point a, Point b, double h = 2.0) { return {a, b, h, 0, "wall", ""}; }
+
+// One open chain of walls inside a border: the smallest map a test can ask for.
+inline Map chain_map(const Rect& border, std::vector<Segment> walls) {
+  Map m;
+  m.border = Border::from_rect(border);
+  Obstacle o;
+  o.id = 1;
+  o.type = ShapeType::OpenPolygon;
+  o.segments = std::move(walls);
+  m.obstacles = {o};
+  m.compute_bounds();
+  return m;
+}
 
 // A 20 m x 10 m room (the border is its walls), its walls one open chain, with an L-shaped wall, a short wall and a
 // closed 1 m x 1 m pillar (the only enclosed obstacle) so that no two places look alike.

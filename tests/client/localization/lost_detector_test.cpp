@@ -246,19 +246,29 @@ TEST(LostDetector, TheSlowAverageDoesNotLearnALoss) {
   EXPECT_GT(d.slow(), 0.8);
 }
 
-TEST(KidnapTrials, OnTheRoomEveryKidnapIsDetectedAndNoDriveRaisesAFalseAlarm) {
-  const Map room = test::room_map();
+// The room, its caster, and trials of the `robust` filter at 300 particles, detection only
+// (recovery is global localization, tested on its own).
+struct RoomTrials {
+  Map room = test::room_map();
   std::shared_ptr<const RayCaster> world = make_fast_ray_caster(room, RayCasterOptions{0.3, 15.0});
-  TrialSettings s;
-  s.filter = *preset("robust");
-  s.filter.particles = 300;
-  s.recover_updates = 0;  // detection only: recovery is global localization, tested on its own
+  TrialSettings s = [] {
+    TrialSettings t;
+    t.filter = *preset("robust");
+    t.filter.particles = 300;
+    t.recover_updates = 0;
+    return t;
+  }();
+};
+
+TEST(KidnapTrials, OnTheRoomEveryKidnapIsDetectedAndNoDriveRaisesAFalseAlarm) {
+  RoomTrials t;
+  TrialSettings& s = t.s;
   s.kidnaps = 4;
   s.kidnap_after = 5;
   s.false_alarm_drive = 40;
   s.laser.people = 3;
   s.seed = 3;
-  const KidnapResult k = run_kidnap_trials(room, world, s);
+  const KidnapResult k = run_kidnap_trials(t.room, t.world, s);
   EXPECT_EQ(k.trials, 4);
   EXPECT_EQ(k.detected, 4);
   EXPECT_EQ(k.false_alarms, 0);
@@ -271,17 +281,13 @@ TEST(KidnapTrials, OnTheRoomEveryKidnapIsDetectedAndNoDriveRaisesAFalseAlarm) {
 // filter that tracks right: each cry is a false alarm of a right pose, none of a lost
 // filter, and the drive has no slip left unsaid.
 TEST(KidnapTrials, ADetectorThatCriesWolfIsCountedAsFalseAlarmsOfARightPose) {
-  const Map room = test::room_map();
-  std::shared_ptr<const RayCaster> world = make_fast_ray_caster(room, RayCasterOptions{0.3, 15.0});
-  TrialSettings s;
-  s.filter = *preset("robust");
-  s.filter.particles = 300;
-  s.recover_updates = 0;
+  RoomTrials t;
+  TrialSettings& s = t.s;
   s.false_alarm_drive = 20;
   s.lost.floor = 1.1;
   s.lost.ratio = 2.0;
   s.seed = 5;
-  const KidnapResult k = run_kidnap_trials(room, world, s);
+  const KidnapResult k = run_kidnap_trials(t.room, t.world, s);
   const int scans = static_cast<int>(20 / DriveOptions{}.step);
   EXPECT_GE(k.false_alarms, scans / (s.lost.warmup + s.lost.hold) / 2);
   EXPECT_EQ(k.alarms_of_right_pose, k.false_alarms);

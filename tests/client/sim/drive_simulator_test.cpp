@@ -62,14 +62,8 @@ TEST(WanderDriver, LooksAroundInPlaceBeforeDriving) {
 // (half the rays around meet a wall within the laser's 15 m), the robot keeps by the room,
 // less than a metre out of it; without it, it wanders off into the empty ground.
 TEST(WanderDriver, KeepsWhereItsMapIsWhenAsked) {
-  Map m;
-  m.border = Border::from_rect({-100, -100, 100, 100});
-  Obstacle u;
-  u.id = 1;
-  u.type = ShapeType::OpenPolygon;
-  u.segments = {test::wall({10, 0}, {0, 0}), test::wall({0, 0}, {0, 10}), test::wall({0, 10}, {10, 10})};
-  m.obstacles = {u};
-  m.compute_bounds();
+  const Map m = test::chain_map({-100, -100, 100, 100},
+                                {test::wall({10, 0}, {0, 0}), test::wall({0, 0}, {0, 10}), test::wall({0, 10}, {10, 10})});
   const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
   const auto farthest_out = [&](double min_walls) {
     DriveOptions o;

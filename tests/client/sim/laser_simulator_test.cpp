@@ -52,14 +52,7 @@ TEST(LaserSimulator, NoiseHasSigmaL) {
 
 TEST(LaserSimulator, BeamsThatHitNothingReturnRmax) {
   // A single wall: the beams that miss it stay at RMAX exactly.
-  Map m;
-  m.border = Border::from_rect({-20, -20, 20, 20});
-  Obstacle o;
-  o.id = 1;
-  o.type = ShapeType::OpenPolygon;
-  o.segments = {test::wall({3, -1}, {3, 1})};
-  m.obstacles = {o};
-  m.compute_bounds();
+  const Map m = test::chain_map({-20, -20, 20, 20}, {test::wall({3, -1}, {3, 1})});
   LaserSimulator laser(std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0}), {}, 3);
   const std::vector<double> r = laser.scan({0, 0, 0});
   EXPECT_EQ(r[0], 15.0);
