@@ -408,12 +408,13 @@ struct TrackedRobot {
   int off_scans_ = 0;  // scans in a row with the estimate more than 1 m off, nothing said
 };
 
-// Driving with no kidnap: a "lost" is a false alarm. Counted apart where the estimate was
-// more than a metre off: not a slip but a filter that had lost the robot by itself. After
-// either, the filter starts again at the truth, as a recovery would put it (the kidnap
-// trials measure recoveries): one slip is one alarm, not one every few scans. A filter
-// more than a metre off for 3 s with nothing said is a slip the detector missed.
-void count_false_alarm(TrackedRobot& robot, KidnapResult& res) {
+// One scan of driving with no kidnap, where a "lost" is a false alarm. Counted apart where
+// the estimate was more than a metre off (a filter that had lost the robot by itself) and
+// where it was within bounds (a false alarm proper). After any "lost" the filter starts
+// again at the truth, as a recovery would put it (the kidnap trials measure recoveries):
+// one slip is one alarm, not one every few scans. A filter more than a metre off for 3 s
+// with nothing said is a slip the detector missed.
+void judge_scan_without_kidnap(TrackedRobot& robot, KidnapResult& res) {
   ++res.scans_without_kidnap;
   if (robot.blind_) ++res.blind_scans;
   const Pose e = robot.filter_->estimate().pose;
@@ -450,7 +451,7 @@ KidnapResult run_kidnap_trials(const Map& map, std::shared_ptr<const RayCaster> 
     double driven = 0;
     while (driven < s.kidnap_after) {
       driven += robot.step();
-      count_false_alarm(robot, res);
+      judge_scan_without_kidnap(robot, res);
     }
     res.driven_without_kidnap += driven;
     ++res.trials;
@@ -496,7 +497,7 @@ KidnapResult run_kidnap_trials(const Map& map, std::shared_ptr<const RayCaster> 
     double driven = 0;
     while (driven < s.false_alarm_drive) {
       driven += robot.step();
-      count_false_alarm(robot, res);
+      judge_scan_without_kidnap(robot, res);
     }
     res.driven_without_kidnap += driven;
   }
