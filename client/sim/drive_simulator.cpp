@@ -26,7 +26,8 @@ bool WanderDriver::clear(double heading) const {
 bool WanderDriver::mapped(double heading) const {
   if (options_.min_walls_around <= 0) return true;
   const Point end = pose_.point() + options_.lookahead * Point{std::cos(heading), std::sin(heading)};
-  // Remembered per 0.25 m cell: the drive asks of the same ground again and again.
+  // Remembered per 0.25 m cell (the answer for the cell's first point stands for all of
+  // it): the drive asks of the same ground again and again.
   const auto ix = static_cast<uint32_t>(static_cast<int32_t>(std::floor(end.x * 4)));
   const auto iy = static_cast<uint32_t>(static_cast<int32_t>(std::floor(end.y * 4)));
   const uint64_t cell = (uint64_t{ix} << 32) | iy;
@@ -37,7 +38,7 @@ bool WanderDriver::mapped(double heading) const {
     return a;
   }();
   double ranges[36];
-  world_->cast_scan(end, 0.0, around, ranges);  // the laser's own sweep: cheaper than 36 casts
+  world_->cast_scan(end, 0.0, around, ranges);
   const double rmax = world_->options().rmax;
   const auto walls = std::count_if(ranges, ranges + 36, [&](double r) { return r < rmax; });
   return mapped_cells_[cell] = static_cast<double>(walls) >= options_.min_walls_around * 36;
