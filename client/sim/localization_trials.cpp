@@ -389,7 +389,8 @@ struct TrackedRobot {
     blind_ = static_cast<double>(hits) < 0.1 * static_cast<double>(scan.size());
     update_filter(*filter_, scan, compass_reading(st.truth, s_.compass_sd, filter_->options().compass_half_width, rng_),
                   told_people(laser_, s_, st.truth, scan));
-    detector_.update(scan_evidence(*world_, filter_->estimate().pose, beams_, scan, s_.lost));
+    estimate_ = filter_->estimate().pose;
+    detector_.update(scan_evidence(*world_, estimate_, beams_, scan, s_.lost));
     return st.driven;
   }
   // Moved without odometry: from here on the driver starts at `to`.
@@ -404,6 +405,7 @@ struct TrackedRobot {
   std::unique_ptr<ParticleFilter> filter_;
   LostDetector detector_;
   Pose truth_;
+  Pose estimate_;       // the filter's, after the last scan (what the detector judged)
   bool blind_ = false;  // under a tenth of the last scan's beams returned (from a wall or a person)
   int off_scans_ = 0;  // scans in a row with the estimate more than 1 m off, nothing said
 };
@@ -417,7 +419,7 @@ struct TrackedRobot {
 void judge_scan_without_kidnap(TrackedRobot& robot, KidnapResult& res) {
   ++res.scans_without_kidnap;
   if (robot.blind_) ++res.blind_scans;
-  const Pose e = robot.filter_->estimate().pose;
+  const Pose& e = robot.estimate_;
   const double error = distance(e, robot.truth_);
   if (!robot.detector_.lost()) {
     if (error > 1.0) {
