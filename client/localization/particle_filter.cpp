@@ -127,8 +127,8 @@ ParticleFilterOptions ParticleFilterOptions::fast_search() {
   // 0.3 m, not 0.5: a person at a wall stops beams 0.45-0.65 m short, and at 0.5 those
   // beams still pulled the cloud towards the wall. Among 30 people, seven 300 m drives:
   // tracking RMS 0.10-0.65 m -> 0.04-0.27 m. The cost: global localization among 10
-  // people, 82 -> 78 % of 200 trials (without people the same within a trial; docs/
-  // localization.md, "The flat short term from 0.3 m").
+  // people, 82 -> 78 % of 200 trials; without people the same within a trial
+  // (docs/localization.md, "The flat short term from 0.3 m").
   o.sensor.short_beyond = 0.3;
   // Left as they were (docs/localization.md, "The search's misses on the campus
   // (2026-12-05)"): turn_in_place_sds 3 and roughening_max_xy 0.05 each saved campus misses
