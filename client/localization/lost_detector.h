@@ -31,8 +31,9 @@ struct LostDetectorOptions {
   // The fast average: about the last 2 scans. Among 30 people 0.5 said 117 of 128
   // kidnaps lost within 3 s where 0.3 said 115; in 12 h of driving without a kidnap it
   // said "lost" 21 times where 0.3 said 18, every time of an estimate 0.6 m or more off
-  // (docs/localization.md, "A faster average"; on a drive that could leave the map). Saying lost after two scans instead of
-  // three gained as much, but then one scan that fits nothing is enough.
+  // (docs/localization.md, "A faster average"; on a drive that could leave the map).
+  // Saying lost after two scans instead of three gained as much, but then one scan that
+  // fits nothing is enough.
   double fast_alpha = 0.5;
   double slow_alpha = 0.02;  // the slow one: about the last 50 (the place's usual fit)
   // Lost when the fast average stays below ratio x the slow one (and below floor) for

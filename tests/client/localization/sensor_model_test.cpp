@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -149,8 +150,8 @@ TEST(SensorModel, ShortOnlyForegroundFlattensFlaggedBeamsOnly) {
 }
 
 // A wall across the view at x = 4 m seen from (x, 0) facing +x, and a crowd lined up
-// crowd_gap metres in front of it (0: no crowd) that hides the beams within
-// crowd_half_angle of the axis.
+// crowd.gap metres in front of it that hides the beams within crowd.half_angle of the
+// axis (no crowd: the map's own ranges).
 constexpr double kWallX = 4.0, kRmax = 15.0;
 
 struct Crowd {
@@ -158,12 +159,12 @@ struct Crowd {
   double half_angle = 40 * kPi / 180;
 };
 
-std::vector<double> wall_ranges(double x, const std::vector<double>& beams, const Crowd& crowd) {
+std::vector<double> wall_ranges(double x, const std::vector<double>& beams, const std::optional<Crowd>& crowd) {
   std::vector<double> r;
   for (double a : beams) {
     const double to_wall = std::cos(a) > 0 ? (kWallX - x) / std::cos(a) : kRmax;
-    const double to_crowd = (kWallX - crowd.gap - x) / std::cos(a);
-    r.push_back(std::min(kRmax, crowd.gap > 0 && std::fabs(a) < crowd.half_angle ? to_crowd : to_wall));
+    const bool hidden = crowd && std::fabs(a) < crowd->half_angle;
+    r.push_back(std::min(kRmax, hidden ? (kWallX - crowd->gap - x) / std::cos(a) : to_wall));
   }
   return r;
 }
@@ -172,7 +173,7 @@ double crowd_score(const SensorModel& m, double pose_x, const Crowd& crowd = {})
   std::vector<double> beams;
   for (int j = 0; j < 131; ++j) beams.push_back(-kPi / 2 + kPi * j / 130);
   const std::vector<double> measured = wall_ranges(0.0, beams, crowd);  // the truth at x = 0
-  const std::vector<double> synthetic = wall_ranges(pose_x, beams, Crowd{0.0, 0.0});
+  const std::vector<double> synthetic = wall_ranges(pose_x, beams, std::nullopt);
   return m.log_weight(measured.data(), synthetic.data(), beams.size());
 }
 
