@@ -274,7 +274,11 @@ int main(int argc, char** argv) {
                "(foreground.h): the ceiling of any people detector");
   app.add_option("--short-beyond", s.short_beyond,
                  "sensor model: beams stopped more than this many metres short count as this short, for every "
-                 "preset (0: eq. 5 as written; negative: the preset's)")
+                 "preset, while tracking and while localizing globally (0: eq. 5 as written; negative: the preset's)")
+      ->capture_default_str();
+  app.add_option("--global-short-beyond", s.global_short_beyond,
+                 "sensor model: --short-beyond while localizing globally (the search, the updates after it, the "
+                 "verdict), for every preset (negative: the preset's)")
       ->capture_default_str();
   app.add_option("--threads", s.filter.threads, "filter threads")->capture_default_str();
   app.add_option("--config", config, "seed, robust, search, fast (comma-separated) or all")->capture_default_str();

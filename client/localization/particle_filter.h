@@ -100,6 +100,10 @@ struct ParticleFilterOptions {
   // sqrt(stages) x 0.2 m per scan, and a sharp, correct place loses to a flat wrong one
   // (docs/localization.md, "Annealing's diffusion shrinking by stage"; 0.7 in fast_search).
   double roughening_stage_decay = 1;
+  // The sensor model's short_beyond while localizing globally, from init_global to the
+  // next init_pose or set_particles: the search's rerank, the updates after it and the
+  // verdict. Negative: sensor.short_beyond throughout.
+  double global_short_beyond = -1;
   bool global_search = false;         // the global phase searches (above)
   GlobalSearchOptions search;         // its likelihood field; margin and hL set from laser
   size_t search_candidates = 2000;    // places the likelihood field keeps (M)
@@ -328,7 +332,11 @@ class ParticleFilter {
   ParticleFilterOptions options_;
   std::vector<double> beams_;
   SensorModel sensor_;
+  SensorModel global_sensor_;  // sensor_ with global_short_beyond: the global phase's
   SensorModel search_sensor_;  // the rerank's and the searched cloud's (search_short_only_foreground)
+  // The model that weighs the cloud and the verdict's places: the global phase's until
+  // the next init_pose.
+  const SensorModel& weighing_sensor() const { return from_global_ ? global_sensor_ : sensor_; }
   MotionModel motion_;
   CompassPrior compass_;
   std::shared_ptr<const RayCaster> caster_;

@@ -609,12 +609,25 @@ void report_map_header(std::FILE* out, const std::string& path, const Map& map, 
                     "iterations; no success rate, tracking error or rate given\n");
 }
 
+namespace {
+
+// ", from 0.5 m while localizing globally" where the global phase has its own value.
+std::string global_short_beyond_note(const ParticleFilterOptions& f) {
+  if (!(f.global_short_beyond >= 0) || f.global_short_beyond == f.sensor.short_beyond) return "";
+  char note[64];
+  std::snprintf(note, sizeof note, ", %.2g m while localizing globally", f.global_short_beyond);
+  return note;
+}
+
+}  // namespace
+
 ParticleFilterOptions trial_filter(const TrialSettings& base, const std::string& name) {
   ParticleFilterOptions f = preset(name).value_or(base.filter);
   f.particles = base.filter.particles;
   f.threads = base.filter.threads;
   f.kld.max_particles = base.filter.particles;
-  if (base.short_beyond >= 0) f.sensor.short_beyond = base.short_beyond;
+  if (base.short_beyond >= 0) f.sensor.short_beyond = f.global_short_beyond = base.short_beyond;
+  if (base.global_short_beyond >= 0) f.global_short_beyond = base.global_short_beyond;
   if (base.short_only_foreground >= 0) f.sensor.short_only_foreground = base.short_only_foreground > 0;
   if (name == "seed") return f;  // the baseline printed beside the others stays the seed's method
   if (base.search_updates >= 0) f.search_updates = static_cast<size_t>(base.search_updates);
@@ -649,10 +662,11 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
   s.filter = trial_filter(base, name);
   const ParticleFilterOptions& f = s.filter;
   std::fprintf(out,
-               "-- %s: %s, gamma %.2g, short beyond %.2g m%s, tempering ESS %.2g x %d stages, init density %.2g /m2, "
+               "-- %s: %s, gamma %.2g, short beyond %.2g m%s%s, tempering ESS %.2g x %d stages, init density %.2g /m2, "
                "roughening %.2g (x %.2g per stage, cap %.2g m)%s%s%s\n",
                name.c_str(), describe(f), f.sensor.gamma, f.sensor.short_beyond,
-               f.sensor.short_only_foreground ? " (foreground only)" : "", f.tempering_ess, f.tempering_stages,
+               f.sensor.short_only_foreground ? " (foreground only)" : "",
+               global_short_beyond_note(f).c_str(), f.tempering_ess, f.tempering_stages,
                f.global_density, f.roughening, f.roughening_stage_decay, f.roughening_max_xy,
                f.global_search ? ", global search (likelihood field, ray-cast rerank)" : "",
                f.global_search && f.search_drops_foreground ? ", foreground left out of the search" : "",

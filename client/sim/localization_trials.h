@@ -72,8 +72,11 @@ struct TrialSettings {
   // foreground) instead of guessing them (foreground.h): the ceiling of any people detector.
   bool exact_people = false;
   LostDetectorOptions lost;
-  // The sensor model's short_beyond for every preset (sensor_model.h); negative: the preset's.
+  // The sensor model's short_beyond for every preset, in every phase (sensor_model.h);
+  // negative: the preset's.
   double short_beyond = -1;
+  // ParticleFilterOptions::global_short_beyond for every preset; negative: the preset's.
+  double global_short_beyond = -1;
   // SensorModelOptions::short_only_foreground for every preset: 1 on, 0 off, negative: the preset's.
   int short_only_foreground = -1;
   // ParticleFilterOptions::search_short_only_foreground for every preset but seed: 1 on, 0 off, negative: the preset's.

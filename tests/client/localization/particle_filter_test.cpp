@@ -13,6 +13,7 @@
 #include "client/sim/drive_simulator.h"
 #include "client/sim/laser_simulator.h"
 #include "client/localization/particle_filter.h"
+#include "client/localization/sensor_model.h"
 #include "common/raycast/grid_ray_caster.h"
 #include "common/map/map_window.h"
 #include "tests/client/test_maps.h"
@@ -184,6 +185,41 @@ TEST(ParticleFilter, AGivenForegroundReplacesTheGuess) {
   // The noiseless scan fits the truth exactly but for the crowd.
   EXPECT_LT(-told.recent_residual()(truth), 1e-6);
   EXPECT_GT(-guessed.recent_residual()(truth), 1.0);
+}
+
+// The fast preset weighs with the flat short term from 0.5 m while it localizes globally
+// and from 0.3 m once tracking (ParticleFilterOptions::global_short_beyond). A crowd
+// against the wall ahead stops 51 beams 0.4 m short: the two models score that scan
+// apart, and the verdict's figure for the true place must come from the phase's own.
+TEST(ParticleFilter, TheGlobalPhaseWeighsWithItsOwnShortTerm) {
+  const Map m = test::room_map();
+  const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
+  ParticleFilterOptions o = ParticleFilterOptions::fast_search();
+  o.particles = 300;
+  o.threads = 1;
+  ASSERT_GT(o.global_short_beyond, o.sensor.short_beyond);
+  const Pose truth{16.5, 7, 0};  // facing the east wall, 3.5 m away
+  LaserSimulator laser(world, {}, 3);
+  const std::vector<double> wall = laser.true_scan(truth);
+  std::vector<double> scan = wall;
+  for (size_t j = 40; j <= 90; ++j) scan[j] -= 0.4;
+  // The scan's log-likelihood at the truth under the flat term from `beyond`.
+  const auto scored = [&](double beyond, const std::vector<uint8_t>& front) {
+    SensorModelOptions so = o.sensor;
+    so.rmax = o.laser.rmax;
+    so.short_beyond = beyond;
+    return SensorModel(so).log_weight(scan.data(), wall.data(), scan.size(), front.empty() ? nullptr : front.data());
+  };
+  ParticleFilter f(m, world, o);
+  f.init_global(truth.theta);
+  f.update(scan, truth.theta);
+  const double global_phase = f.recent_log_likelihood(truth);
+  EXPECT_NEAR(global_phase, scored(o.global_short_beyond, f.last_foreground()), 1e-9);
+  f.init_pose(truth, 0.05, 0.02);
+  f.update(scan, truth.theta);
+  const double tracking = f.recent_log_likelihood(truth);
+  EXPECT_NEAR(tracking, scored(o.sensor.short_beyond, f.last_foreground()), 1e-9);
+  EXPECT_GT(std::fabs(global_phase - tracking), 1.0);  // the premise: the two models differ on it
 }
 
 TEST(ParticleFilter, AGivenForegroundOfTheWrongSizeIsRefusedAndChangesNothing) {
