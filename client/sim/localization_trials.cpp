@@ -611,7 +611,7 @@ void report_map_header(std::FILE* out, const std::string& path, const Map& map, 
 
 namespace {
 
-// ", from 0.5 m while localizing globally" where the global phase has its own value.
+// ", 0.5 m while localizing globally" where the global phase has a value of its own.
 std::string global_short_beyond_note(const ParticleFilterOptions& f) {
   if (!(f.global_short_beyond >= 0) || f.global_short_beyond == f.sensor.short_beyond) return "";
   char note[64];
