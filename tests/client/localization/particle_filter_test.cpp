@@ -152,17 +152,27 @@ TEST(ParticleFilter, UpdateChecksItsInput) {
   EXPECT_THROW(f.update(std::vector<double>(130, 5.0)), std::invalid_argument);
 }
 
+// The room, its caster, the fast preset at 300 particles on one thread, and a robot at
+// (16.5, 7) facing the east wall, 3.5 m away.
+struct FastInTheRoom {
+  Map m = test::room_map();
+  std::shared_ptr<const RayCaster> world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
+  ParticleFilterOptions o = [] {
+    ParticleFilterOptions f = ParticleFilterOptions::fast_search();
+    f.particles = 300;
+    f.threads = 1;
+    return f;
+  }();
+  Pose truth{16.5, 7, 0};
+};
+
 // Another detector (a leg tracker, a camera) may know which returns are people. Here a
 // crowd 1.7 m wide stands 1.5 m in front of the robot: wider than two people, so
 // foreground.h's guess keeps it, and the verdict's residual charges the true pose for it.
 // Named as foreground, it is left out as the guessed people are.
 TEST(ParticleFilter, AGivenForegroundReplacesTheGuess) {
-  const Map m = test::room_map();
-  const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
-  ParticleFilterOptions o = ParticleFilterOptions::fast_search();
-  o.particles = 300;
-  o.threads = 1;
-  const Pose truth{16.5, 7, 0};  // facing the east wall, 3.5 m away
+  const FastInTheRoom r;
+  const auto& [m, world, o, truth] = r;
   LaserSimulator laser(world, {}, 3);
   std::vector<double> scan = laser.true_scan(truth);
   std::vector<uint8_t> crowd(scan.size(), 0);
@@ -192,13 +202,9 @@ TEST(ParticleFilter, AGivenForegroundReplacesTheGuess) {
 // against the wall ahead stops 51 beams 0.4 m short: the two models score that scan
 // apart, and the verdict's figure for the true place must come from the phase's own.
 TEST(ParticleFilter, TheGlobalPhaseWeighsWithItsOwnShortTerm) {
-  const Map m = test::room_map();
-  const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
-  ParticleFilterOptions o = ParticleFilterOptions::fast_search();
-  o.particles = 300;
-  o.threads = 1;
+  const FastInTheRoom r;
+  const auto& [m, world, o, truth] = r;
   ASSERT_GT(o.global_short_beyond, o.sensor.short_beyond);
-  const Pose truth{16.5, 7, 0};  // facing the east wall, 3.5 m away
   LaserSimulator laser(world, {}, 3);
   const std::vector<double> wall = laser.true_scan(truth);
   std::vector<double> scan = wall;
