@@ -210,9 +210,10 @@ TEST(ParticleFilter, TheGlobalPhaseWeighsWithItsOwnShortTerm) {
   std::vector<double> scan = wall;
   for (size_t j = 40; j <= 90; ++j) scan[j] -= 0.4;
   // The scan's log-likelihood at the truth under the flat term from `beyond`.
+  // (r.o, not o: a lambda may not capture a structured binding before C++20's P1091 in clang)
   const auto scored = [&](double beyond, const std::vector<uint8_t>& front) {
-    SensorModelOptions so = o.sensor;
-    so.rmax = o.laser.rmax;
+    SensorModelOptions so = r.o.sensor;
+    so.rmax = r.o.laser.rmax;
     so.short_beyond = beyond;
     return SensorModel(so).log_weight(scan.data(), wall.data(), scan.size(), front.empty() ? nullptr : front.data());
   };
