@@ -210,7 +210,7 @@ TEST(ParticleFilter, TheGlobalPhaseWeighsWithItsOwnShortTerm) {
   std::vector<double> scan = wall;
   for (size_t j = 40; j <= 90; ++j) scan[j] -= 0.4;
   // The scan's log-likelihood at the truth under the flat term from `beyond`.
-  // (r.o, not o: a lambda may not capture a structured binding before C++20's P1091 in clang)
+  // r.o, not o: Debian 12's clang cannot capture a structured binding in a lambda.
   const auto scored = [&](double beyond, const std::vector<uint8_t>& front) {
     SensorModelOptions so = r.o.sensor;
     so.rmax = r.o.laser.rmax;
