@@ -496,6 +496,7 @@ void ParticleFilter::correct(const std::vector<double>& ranges, std::optional<do
       }
     }
     const uint8_t* latest_front = front.empty() ? nullptr : front.data();
+    const SensorModel& model = weighing_sensor();  // one phase for the whole update
     log_likelihood_.resize(poses_.size());
     parallel_for(options_.threads, poses_.size(), [&](int, size_t begin, size_t end) {
       std::vector<double> synthetic(beams_.size());
@@ -504,7 +505,7 @@ void ParticleFilter::correct(const std::vector<double>& ranges, std::optional<do
         double ll = 0;
         if (searched_at_.empty()) {
           caster.cast_scan(p.point(), p.theta, beams_, synthetic.data());
-          ll = weighing_sensor().log_weight(ranges.data(), synthetic.data(), beams_.size(), latest_front);
+          ll = model.log_weight(ranges.data(), synthetic.data(), beams_.size(), latest_front);
         }
         // A fresh cloud from a search has not yet seen the scans before this one.
         for (size_t k = 0; k < searched_at_.size(); ++k) {
