@@ -30,8 +30,23 @@ std::vector<double> LaserSimulator::true_scan(const Pose& truth) const {
 }
 
 bool LaserSimulator::clear_of_walls(Point c, double radius) const {
-  for (int k = 0; k < kClearanceRays; ++k)
-    if (world_->cast(c, 2 * kPi * k / kClearanceRays) < radius + kWallMargin) return false;
+  // Rays from the centre miss a wall's end that points at it between two rays, so the
+  // sides of a polygon around the disc are cast too: a wall that enters the disc crosses
+  // one of them, unless it lies wholly inside, where the centre's rays meet it.
+  const double clear = radius + kWallMargin;
+  const double corner = clear / std::cos(kPi / kClearanceRays);  // the polygon holds the disc
+  const double side = 2 * corner * std::sin(kPi / kClearanceRays);
+  for (int k = 0; k < kClearanceRays; ++k) {
+    const double a = 2 * kPi * k / kClearanceRays, b = 2 * kPi * (k + 1) / kClearanceRays;
+    if (world_->cast(c, a) < clear) return false;
+    if (world_->cast(c + corner * ray_direction(a), (a + b) / 2 + kPi / 2) < side) return false;
+  }
+  return true;
+}
+
+bool LaserSimulator::clear_of_people(Point c, double radius, const Person* self) const {
+  for (const Person& q : people_)
+    if (&q != self && q.radius > 0 && distance(c, q.centre) < radius + q.radius) return false;
   return true;
 }
 
@@ -54,7 +69,7 @@ bool LaserSimulator::place_in_view(const Pose& truth, Person& p) {
     const double lo = options_.min_person_range + radius, hi = std::min(wall, rmax()) - radius - kWallMargin;
     if (!(radius > 0) || hi <= lo) continue;
     const Point c = truth.point() + (lo + u01(rng_) * (hi - lo)) * ray_direction(bearing);
-    if (!clear_of_walls(c, radius)) continue;
+    if (!clear_of_walls(c, radius) || !clear_of_people(c, radius, &p)) continue;
     p.centre = c;
     p.radius = radius;
     p.velocity = options_.person_speed * ray_direction(2 * kPi * u01(rng_));
@@ -71,7 +86,7 @@ void LaserSimulator::walk(const Pose& truth, Person& p) {
   const double heading = std::atan2(p.velocity.y, p.velocity.x);
   const bool blocked = world_->cast(p.centre, heading) < step + p.radius + kWallMargin ||
                        distance(next, truth.point()) < options_.min_person_range + p.radius ||
-                       !clear_of_walls(next, p.radius);
+                       !clear_of_walls(next, p.radius) || !clear_of_people(next, p.radius, &p);
   if (!blocked) {
     p.centre = next;
     return;
@@ -84,7 +99,9 @@ std::vector<double> LaserSimulator::scan(const Pose& truth) {
   std::vector<double> r = true_scan(truth);
   if (options_.people > 0) {
     if (people_.empty()) {
-      people_.resize(static_cast<size_t>(options_.people));
+      Person unplaced;
+      unplaced.radius = 0;  // in no one's way until placed
+      people_.assign(static_cast<size_t>(options_.people), unplaced);
       for (Person& p : people_) place_in_view(truth, p);
     } else {
       for (Person& p : people_) {

@@ -6,12 +6,18 @@
 // Unmodelled obstacles (seed 000 eq. 5's uniform term): `people` walking discs, each
 // person_width metres across (drawn per person within +-person_width_spread), kept in
 // the scans: a person is placed in free space in the laser's field of view, in line of
-// sight, at least min_person_range from the laser and clear of every wall; it walks at
-// person_speed (scan_period seconds between scans) and turns to a new random heading
-// when its next step would bring it against a wall or the laser. A person that leaves
-// the field of view, the range or the line of sight is placed again in view, so every
-// scan holds `people` of them (they may hide one another). Beams meet the discs exactly
-// and return the nearer of the disc and the wall, then get the same noise.
+// sight, at least min_person_range from the laser and clear of every wall and every other
+// person; it walks at person_speed (scan_period seconds between scans) and turns to a new
+// random heading when its next step would bring it against a wall, the laser or another
+// person. A person that leaves the field of view, the range or the line of sight is
+// placed again in view. So a scan holds up to `people` of them (they may hide one
+// another); fewer where the view has no room left for one more (kPlaceAttempts). Beams
+// meet the discs exactly and return the nearer of the disc and the wall, then get the
+// same noise.
+//
+// Why people never overlap: bodies do not, at a laser's height. Four overlapping discs
+// side by side have fronts within 0.15 m of one line over 1.85 m, a straight piece no
+// real row of people shows (docs/localization.md, "People who do not overlap").
 #include <cstdint>
 #include <memory>
 #include <random>
@@ -58,6 +64,8 @@ class LaserSimulator {
 
  private:
   bool clear_of_walls(Point c, double radius) const;
+  // No other person (than self) in the disc of centre c: discs may touch, not overlap.
+  bool clear_of_people(Point c, double radius, const Person* self) const;
   bool in_view(const Pose& truth, const Person& p) const;
   bool place_in_view(const Pose& truth, Person& p);
   void walk(const Pose& truth, Person& p);
