@@ -387,6 +387,12 @@ struct TrackedRobot {
     const std::vector<double> scan = laser_.scan(st.truth);
     const auto hits = std::count_if(scan.begin(), scan.end(), [&](double r) { return r < laser_.rmax(); });
     blind_ = static_cast<double>(hits) < 0.1 * static_cast<double>(scan.size());
+    if (s_.laser.people > 0) {
+      const std::vector<uint8_t> stopped = people_returns(laser_, st.truth, scan);
+      hidden_ = static_cast<size_t>(std::count(stopped.begin(), stopped.end(), 1));
+      in_view_ = static_cast<size_t>(std::count_if(laser_.people().begin(), laser_.people().end(),
+                                                   [](const Person& p) { return p.radius > 0; }));
+    }
     update_filter(*filter_, scan, compass_reading(st.truth, s_.compass_sd, filter_->options().compass_half_width, rng_),
                   told_people(laser_, s_, st.truth, scan));
     estimate_ = filter_->estimate().pose;
@@ -407,6 +413,7 @@ struct TrackedRobot {
   Pose truth_;
   Pose estimate_;       // the filter's, after the last scan (what the detector judged)
   bool blind_ = false;  // under a tenth of the last scan's beams returned (from a wall or a person)
+  size_t in_view_ = 0, hidden_ = 0;  // the last scan's people in view and the beams they stopped
   int off_scans_ = 0;  // scans in a row with the estimate more than 1 m off, nothing said
 };
 
@@ -419,6 +426,9 @@ struct TrackedRobot {
 void judge_scan_without_kidnap(TrackedRobot& robot, KidnapResult& res) {
   ++res.scans_without_kidnap;
   if (robot.blind_) ++res.blind_scans;
+  res.people_in_view += robot.in_view_;
+  res.beams_hidden += robot.hidden_;
+  res.beams_seen += robot.beams_.size();
   const Pose& e = robot.estimate_;
   const double error = distance(e, robot.truth_);
   if (!robot.detector_.lost()) {
@@ -534,6 +544,12 @@ void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
                s.recover_updates > 0 ? k.detected - k.recovered - k.wrong : 0, k.false_alarms, hours, k.driven_without_kidnap,
                k.alarms_while_off, k.alarms_of_right_pose, k.slips_unsaid,
                100.0 * k.blind_scans / std::max(1, k.scans_without_kidnap), seconds_since(t0));
+  if (s.laser.people > 0 && k.scans_without_kidnap > 0)
+    std::fprintf(out,
+                 "  people in view per scan (the driving without a kidnap): mean %.1f of %d, stopping %.1f %% of the "
+                 "beams (0.3 m or more short of the wall behind)\n",
+                 static_cast<double>(k.people_in_view) / k.scans_without_kidnap, s.laser.people,
+                 100.0 * k.beams_hidden / std::max<size_t>(1, k.beams_seen));
   // The detector's baselines in the same run: the same kidnaps, detection only (no hour
   // of driving), with a rule of the detector undone.
   const auto detection_baseline = [&](const char* what, const auto& undo) {

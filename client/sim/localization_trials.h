@@ -222,6 +222,9 @@ struct KidnapResult {
   std::vector<double> alarm_error_m, alarm_error_deg;  // the estimate's error at each false alarm
   double driven_without_kidnap = 0;  // metres of driving in which a "lost" is a false alarm
   int scans_without_kidnap = 0, blind_scans = 0;  // of that driving; blind: under a tenth of the beams returned
+  // Of those scans, with people: how many stood in view, and the beams they stopped (0.3 m
+  // or more short of the wall behind), of all. How crowded "30 people" is on this map.
+  size_t people_in_view = 0, beams_hidden = 0, beams_seen = 0;
 };
 
 // Per beam: closer fits than this are a tie (settling's measurement, docs/localization.md).
