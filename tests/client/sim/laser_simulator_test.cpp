@@ -145,10 +145,11 @@ TEST(LaserSimulator, PeopleNeverOverlap) {
     for (size_t i = 0; i < people.size(); ++i) {
       if (!(people[i].radius > 0)) continue;
       ++placed;
-      for (size_t j = i + 1; j < people.size(); ++j)
-        if (people[j].radius > 0)
-          ASSERT_GE(distance(people[i].centre, people[j].centre), people[i].radius + people[j].radius - 1e-12)
-              << "scan " << k << ": people " << i << " and " << j << " overlap";
+      for (size_t j = i + 1; j < people.size(); ++j) {
+        if (!(people[j].radius > 0)) continue;
+        ASSERT_GE(distance(people[i].centre, people[j].centre), people[i].radius + people[j].radius - 1e-12)
+            << "scan " << k << ": people " << i << " and " << j << " overlap";
+      }
     }
     ++scans;
   }
