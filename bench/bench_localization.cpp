@@ -227,6 +227,17 @@ int main(int argc, char** argv) {
                  "roughening's jitter (capped) at a scan's s-th annealing stage is multiplied by this to the power s, "
                  "for every preset but seed (1: the same at every stage; default: the preset's)")
       ->check(CLI::Range(0.0, 1.0));
+  app.add_option("--kld-min-particles", s.kld_min_particles,
+                 "KLD sampling's fewest particles while tracking, for every preset but seed (default: the preset's)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--kld-bin-xy", s.kld_bin_xy,
+                 "metres: KLD sampling's bin in x and y, for every preset but seed (default: the preset's)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--kld-bin-theta", s.kld_bin_theta_deg,
+                 "degrees: KLD sampling's bin in heading, for every preset but seed (default: the preset's)")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--tracking-fixed,!--no-tracking-fixed", s.tracking_fixed,
+               "tracking drives a cloud of NP fixed particles beside the KLD one (default on)");
   app.add_option("--lost-floor", s.lost.floor,
                  "the lost detector's floor: lost when the fast average of the scans' agreement stays below it (and "
                  "below ratio x the slow average) for hold updates")
@@ -262,6 +273,11 @@ int main(int argc, char** argv) {
                  "scans with fewer beams that agree or disagree leave the lost detector as it was (0: every scan counts)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
+  app.add_option("--lost-hold-against", s.lost.hold_against,
+                 "of the hold updates below that say lost, scans that fit below the floor themselves (1: one, then blind "
+                 "scans, may say it; the baseline of 2 or more is 1)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--drive-min-walls", s.drive_min_walls,
                  "every drive keeps where this share of 36 rays around meets a wall within the laser's range "

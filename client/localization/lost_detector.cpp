@@ -46,7 +46,7 @@ bool LostDetector::update(const ScanEvidence& evidence) {
   // A blind scan: the averages stay, and time goes on (a low fit that nothing
   // contradicts stays low for as long).
   if (updates_ == 0) return lost_;
-  return judge();
+  return judge(false);
 }
 
 bool LostDetector::update(double agreement) {
@@ -59,19 +59,20 @@ bool LostDetector::update(double agreement) {
     if (!lost_) slow_ += options_.slow_alpha * (agreement - slow_);
   }
   ++updates_;
-  return judge();
+  return judge(agreement < options_.floor);
 }
 
-bool LostDetector::judge() {
+bool LostDetector::judge(bool against) {
   const bool low = fast_ < options_.ratio * slow_ && fast_ < options_.floor;
   below_ = low ? below_ + 1 : 0;
-  if (updates_ > options_.warmup && below_ >= options_.hold) lost_ = true;
+  against_below_ = low ? against_below_ + (against ? 1 : 0) : 0;
+  if (updates_ > options_.warmup && below_ >= options_.hold && against_below_ >= options_.hold_against) lost_ = true;
   return lost_;
 }
 
 void LostDetector::reset() {
   fast_ = slow_ = 0;
-  updates_ = below_ = 0;
+  updates_ = below_ = against_below_ = 0;
   lost_ = false;
 }
 

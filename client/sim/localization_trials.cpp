@@ -568,6 +568,9 @@ void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
   if (s.kidnaps > 0 && s.lost.min_telling_beams > 0)
     detection_baseline("a scan on which no beam tells counted as full agreement (--lost-min-telling 0)",
                        [](LostDetectorOptions& o) { o.min_telling_beams = 0; });
+  if (s.kidnaps > 0 && s.lost.hold_against > 1)
+    detection_baseline("one scan below the floor, then blind ones, enough to say lost (--lost-hold-against 1)",
+                       [](LostDetectorOptions& o) { o.hold_against = 1; });
   if (s.kidnaps > 0 && (s.lost.open_beam_weight < 1 || s.lost.fast_alpha != 0.3))
     detection_baseline("open beams counted whole and the fast average at 0.3 (--lost-open-weight 1 --lost-fast-alpha 0.3)",
                        [](LostDetectorOptions& o) {

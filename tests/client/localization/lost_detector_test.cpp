@@ -135,6 +135,7 @@ TEST(LostDetector, BlindScansKeepTheAveragesAndLetTimeRun) {
   for (size_t min_telling : {size_t{1}, size_t{0}}) {
     LostDetectorOptions o;
     o.min_telling_beams = min_telling;
+    ASSERT_EQ(o.hold_against, 1);  // one scan against the pose, then blind ones (the next test: 2)
     o.ratio = 0.8;
     o.floor = 0.75;
     LostDetector d(o);
@@ -157,6 +158,33 @@ TEST(LostDetector, BlindScansKeepTheAveragesAndLetTimeRun) {
   // Blind from the start: nothing to judge, never lost.
   LostDetector d;
   for (int i = 0; i < 50; ++i) EXPECT_FALSE(d.update(blind));
+}
+
+// With hold_against 2, one scan against the pose (a crowd in a row read as a wall), then
+// blind ones, is not enough; a second scan against it is, though a good scan came between.
+TEST(LostDetector, OneScanAgainstThePoseThenBlindOnesIsNotEnough) {
+  const ScanEvidence good{100, 0, 2}, wrong{0, 0, 20}, blind{};
+  LostDetectorOptions o;
+  o.hold_against = 2;
+  LostDetector d(o);
+  for (int i = 0; i < 30; ++i) d.update(good);
+  d.update(wrong);
+  for (int i = 0; i < 10; ++i) EXPECT_FALSE(d.update(blind)) << i;
+  ASSERT_LT(d.fast(), o.floor);
+  // A good scan lifts the fast average to 0.73, still below the floor: low, but not
+  // against the pose itself.
+  EXPECT_FALSE(d.update(good));
+  ASSERT_LT(d.fast(), o.floor);
+  EXPECT_TRUE(d.update(wrong));
+
+  // Once the fast average is back over the floor, the count starts again.
+  LostDetector e(o);
+  for (int i = 0; i < 30; ++i) e.update(good);
+  e.update(wrong);
+  for (int i = 0; i < 3; ++i) e.update(good);
+  ASSERT_GT(e.fast(), o.floor);
+  EXPECT_FALSE(e.update(wrong));
+  for (int i = 0; i < 10; ++i) EXPECT_FALSE(e.update(blind)) << i;
 }
 
 TEST(LostDetector, StaysFoundOnAGoodOrMerelyHarderPlace) {
@@ -229,7 +257,7 @@ TEST(LostDetector, ALastingDropIsLostAfterHoldUpdatesAndResetForgetsIt) {
 TEST(LostDetector, OneScanThatFitsNothingIsNotLost) {
   for (int hold : {3, 2}) {
     LostDetectorOptions o;
-    o.hold = hold;
+    o.hold = hold;  // hold alone decides here (hold_against 1)
     LostDetector d(o);
     for (int i = 0; i < 100; ++i) d.update(0.9);
     bool lost = d.update(0.0);
