@@ -117,10 +117,10 @@ struct TrialSettings {
   // KldOptions of the tracking cloud: min_particles (0: the preset's), bin_xy in metres and
   // bin_theta in degrees (negative: the preset's).
   size_t kld_min_particles = 0;
-  // Tracking also drives a fixed cloud of NP particles beside the KLD one (report_preset).
-  bool tracking_fixed = true;
   double kld_bin_xy = -1;
   double kld_bin_theta_deg = -1;
+  // Tracking also drives a fixed cloud of NP particles beside the KLD one (report_preset).
+  bool tracking_fixed = true;
   // After each global trial whose estimate ends out of bounds: whom the scans favour, the
   // truth or the estimate (GlobalTrial::truth_fit), to tell the model's failures (no
   // filter on it could pick the truth) from the filter's (it lost a better place).
