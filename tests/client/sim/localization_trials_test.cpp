@@ -110,6 +110,23 @@ TEST(LocalizationTrials, ExactPeopleReachTheFilter) {
 // In a hall of pillars on a grid, starts with a twin (twin_places.h) are called ambiguous
 // once the filter scores the search's places it lost (AmbiguityOptions::rivals); without
 // them resampling leaves one of the two and reports it as the pose (6 of 11 on seed 4242).
+// The bench's KLD options reach the filter of every preset but seed; unset, the preset's
+// own floor stays (fast: 1 000, docs/localization.md "A tracking cloud of 1 000").
+TEST(LocalizationTrials, KldOptionsReachTheTrialsFilter) {
+  TrialSettings s;
+  s.filter = preset("fast").value();
+  EXPECT_EQ(trial_filter(s, "fast").kld.min_particles, 1000u);
+  EXPECT_EQ(trial_filter(s, "search").kld.min_particles, 500u);
+  s.kld_min_particles = 700;
+  s.kld_bin_xy = 0.25;
+  s.kld_bin_theta_deg = 5;
+  const ParticleFilterOptions f = trial_filter(s, "fast");
+  EXPECT_EQ(f.kld.min_particles, 700u);
+  EXPECT_DOUBLE_EQ(f.kld.bin_xy, 0.25);
+  EXPECT_NEAR(f.kld.bin_theta, 5 * M_PI / 180, 1e-12);
+  EXPECT_EQ(trial_filter(s, "seed").kld.min_particles, 500u);  // the baseline stays the seed's
+}
+
 TEST(LocalizationTrials, TwinStartsInAHallOfPillarsAreCalledAmbiguous) {
   Trials t("fast");
   t.map = load_map_file("gen:hall");
