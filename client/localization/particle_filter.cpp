@@ -116,9 +116,9 @@ ParticleFilterOptions ParticleFilterOptions::fast_search() {
   // beams (docs/localization.md, "Short only in front"; campus 80.5 -> 87 %).
   o.search_short_only_foreground = true;
   o.adaptive = true;            // KLD: the collapsed cloud shrinks towards kld.min_particles
-  // Not below 1 000: among 30 people a collapsed cloud of 500 tracked GDC1 at 0.116 m RMS
-  // where 1 000 gave 0.090 m (docs/localization.md, "A tracking cloud of 1 000").
-  o.kld.min_particles = 1000;
+  // The floor stays KldOptions' 500. 1 000 tracked better among 30 people (GDC1 0.116 ->
+  // 0.090 m), but it also holds after the global search, where it bought nothing and took
+  // the campus's p95 from 0.88 to 1.23 s (docs/localization.md, "A tracking cloud of 1 000").
   // Six annealing stages instead of three: the searched cloud is weighed on seven scans
   // at once, and three stages at ESS 30 % left part of them unapplied, so look-alike
   // places were still heavy after the three steps driven (docs/localization.md, "Six

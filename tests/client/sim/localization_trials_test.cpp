@@ -111,12 +111,12 @@ TEST(LocalizationTrials, ExactPeopleReachTheFilter) {
 // once the filter scores the search's places it lost (AmbiguityOptions::rivals); without
 // them resampling leaves one of the two and reports it as the pose (6 of 11 on seed 4242).
 // The bench's KLD options reach the filter of every preset but seed; unset, the preset's
-// own floor stays (fast: 1 000, docs/localization.md "A tracking cloud of 1 000").
+// own floor stays (docs/localization.md, "A tracking cloud of 1 000").
 TEST(LocalizationTrials, KldOptionsReachTheTrialsFilter) {
   TrialSettings s;
   s.filter = preset("fast").value();
-  EXPECT_EQ(trial_filter(s, "fast").kld.min_particles, 1000u);
-  EXPECT_EQ(trial_filter(s, "search").kld.min_particles, 500u);
+  EXPECT_EQ(trial_filter(s, "fast").kld.min_particles, preset("fast")->kld.min_particles);
+  EXPECT_EQ(trial_filter(s, "search").kld.min_particles, preset("search")->kld.min_particles);
   s.kld_min_particles = 700;
   s.kld_bin_xy = 0.25;
   s.kld_bin_theta_deg = 5;
