@@ -107,9 +107,6 @@ TEST(LocalizationTrials, ExactPeopleReachTheFilter) {
   EXPECT_GE(differ, 1);
 }
 
-// In a hall of pillars on a grid, starts with a twin (twin_places.h) are called ambiguous
-// once the filter scores the search's places it lost (AmbiguityOptions::rivals); without
-// them resampling leaves one of the two and reports it as the pose (6 of 11 on seed 4242).
 // The bench's KLD options reach the filter of every preset but seed; unset, the preset's
 // own floor stays (docs/localization.md, "A tracking cloud of 1 000").
 TEST(LocalizationTrials, KldOptionsReachTheTrialsFilter) {
@@ -127,6 +124,9 @@ TEST(LocalizationTrials, KldOptionsReachTheTrialsFilter) {
   EXPECT_EQ(trial_filter(s, "seed").kld.min_particles, 500u);  // the baseline stays the seed's
 }
 
+// In a hall of pillars on a grid, starts with a twin (twin_places.h) are called ambiguous
+// once the filter scores the search's places it lost (AmbiguityOptions::rivals); without
+// them resampling leaves one of the two and reports it as the pose (6 of 11 on seed 4242).
 TEST(LocalizationTrials, TwinStartsInAHallOfPillarsAreCalledAmbiguous) {
   Trials t("fast");
   t.map = load_map_file("gen:hall");
