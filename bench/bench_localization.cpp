@@ -228,7 +228,12 @@ int main(int argc, char** argv) {
                  "for every preset but seed (1: the same at every stage; default: the preset's)")
       ->check(CLI::Range(0.0, 1.0));
   app.add_option("--kld-min-particles", s.kld_min_particles,
-                 "KLD sampling's fewest particles while tracking, for every preset but seed (default: the preset's)")
+                 "KLD sampling's fewest particles, the global phase's and tracking's where --tracking-min-particles "
+                 "is lower, for every preset but seed (default: the preset's)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--tracking-min-particles", s.tracking_min_particles,
+                 "KLD sampling's fewest particles from a known pose on (tracking), for every preset but seed "
+                 "(default: the preset's; 1: the global phase's)")
       ->check(CLI::PositiveNumber);
   app.add_option("--kld-bin-xy", s.kld_bin_xy,
                  "metres: KLD sampling's bin in x and y, for every preset but seed (default: the preset's)")

@@ -116,9 +116,11 @@ ParticleFilterOptions ParticleFilterOptions::fast_search() {
   // beams (docs/localization.md, "Short only in front"; campus 80.5 -> 87 %).
   o.search_short_only_foreground = true;
   o.adaptive = true;            // KLD: the collapsed cloud shrinks towards kld.min_particles
-  // The floor stays KldOptions' 500. 1 000 tracked better among 30 people (GDC1 0.116 ->
-  // 0.090 m), but it also holds after the global search, where it bought nothing and took
-  // the campus's p95 from 0.88 to 1.23 s (docs/localization.md, "A tracking cloud of 1 000").
+  // The global phase's floor stays KldOptions' 500; tracking keeps 1 000. Among 30 people
+  // 1 000 tracked better (GDC1 0.116 -> 0.090 m), but after the global search it bought
+  // nothing and took the campus's p95 from 0.88 to 1.23 s (docs/localization.md, "A
+  // tracking cloud of 1 000").
+  o.tracking_min_particles = 1000;
   // Six annealing stages instead of three: the searched cloud is weighed on seven scans
   // at once, and three stages at ESS 30 % left part of them unapplied, so look-alike
   // places were still heavy after the three steps driven (docs/localization.md, "Six
@@ -610,7 +612,9 @@ void ParticleFilter::normalize_weights() {
 }
 
 void ParticleFilter::resample() {
-  const std::vector<size_t> idx = options_.adaptive ? kld_resample(poses_, weights_, options_.kld, rng_)
+  KldOptions kld = options_.kld;
+  if (!from_global_) kld.min_particles = std::max(kld.min_particles, options_.tracking_min_particles);
+  const std::vector<size_t> idx = options_.adaptive ? kld_resample(poses_, weights_, kld, rng_)
                                                     : low_variance_resample(weights_, options_.particles, rng_);
   std::vector<Pose> next(idx.size());
   for (size_t m = 0; m < idx.size(); ++m) next[m] = poses_[idx[m]];

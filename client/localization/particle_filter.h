@@ -164,6 +164,12 @@ struct ParticleFilterOptions {
   double search_sd_theta = deg2rad(0.7);  // radians: about the search's heading step
   bool adaptive = false;              // KLD sampling instead of a fixed NP
   KldOptions kld;
+  // KLD's floor from init_pose or set_particles on (tracking a known pose), where it is
+  // above kld.min_particles (and up to kld.max_particles); the global phase keeps
+  // kld.min_particles. Why apart: among 30 people 1 000 tracked better than 500, but after
+  // the global search it bought nothing and cost a third of the time (docs/localization.md,
+  // "A tracking cloud of 1 000"). 0: kld.min_particles throughout.
+  size_t tracking_min_particles = 0;
   double cluster_cell = 1.0;              // metres, for PoseEstimate::pose
   double converged_xy = 0.5;              // metres of spread under which
   double converged_theta = deg2rad(5.0);  // and radians: PoseEstimate::converged

@@ -672,6 +672,7 @@ ParticleFilterOptions trial_filter(const TrialSettings& base, const std::string&
   if (base.roughening_max_xy >= 0) f.roughening_max_xy = base.roughening_max_xy;
   if (base.roughening_stage_decay >= 0) f.roughening_stage_decay = base.roughening_stage_decay;
   if (base.kld_min_particles > 0) f.kld.min_particles = base.kld_min_particles;
+  if (base.tracking_min_particles > 0) f.tracking_min_particles = base.tracking_min_particles;
   if (base.kld_bin_xy > 0) f.kld.bin_xy = base.kld_bin_xy;
   if (base.kld_bin_theta_deg > 0) f.kld.bin_theta = deg2rad(base.kld_bin_theta_deg);
   return f;
@@ -774,10 +775,14 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
     for (bool adaptive : {false, true}) {
       if (!adaptive && !s.tracking_fixed) continue;
       const TrackResult t = run_tracking_trial(map, world, s, adaptive);
+      char kind[64] = "fixed NP    ";
+      if (adaptive)
+        std::snprintf(kind, sizeof kind, "KLD adaptive (at least %zu)",
+                      std::min(std::max(f.kld.min_particles, f.tracking_min_particles), f.particles));
       std::fprintf(out,
                    "tracking %s, %.0f m, %d updates: RMS %.3f m (goal < 0.10 m), max %.3f m, RMS heading %.2f deg, "
                    "mean %.0f particles, %.1f Hz\n",
-                   adaptive ? "KLD adaptive" : "fixed NP    ", t.driven, t.updates, t.rms, t.max,
+                   kind, t.driven, t.updates, t.rms, t.max,
                    rad2deg(t.rms_theta), t.mean_particles, t.updates / t.seconds);
       if (!adaptive || !s.tracking_fixed)  // the baseline, once per drive
         std::fprintf(out, "  baseline: dead reckoning on the same odometry: RMS %.3f m, final %.3f m\n",

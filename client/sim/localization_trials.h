@@ -114,9 +114,12 @@ struct TrialSettings {
   double roughening_max_xy = -1;
   // ParticleFilterOptions::roughening_stage_decay (negative: the preset's).
   double roughening_stage_decay = -1;
-  // KldOptions of the tracking cloud: min_particles (0: the preset's), bin_xy in metres and
-  // bin_theta in degrees (negative: the preset's).
+  // KldOptions: min_particles (0: the preset's), bin_xy in metres and bin_theta in degrees
+  // (negative: the preset's).
   size_t kld_min_particles = 0;
+  // ParticleFilterOptions::tracking_min_particles, KLD's floor from a known pose on (0: the
+  // preset's).
+  size_t tracking_min_particles = 0;
   double kld_bin_xy = -1;
   double kld_bin_theta_deg = -1;
   // Tracking also drives a fixed cloud of NP particles beside the KLD one (report_preset).

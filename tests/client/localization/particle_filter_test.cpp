@@ -594,5 +594,46 @@ TEST(ParticleFilter, KldShrinksATrackingCloud) {
   EXPECT_LT(worst, 0.3);
 }
 
+// The tracking floor holds from a known pose on; a cloud from init_global keeps
+// kld.min_particles even once it has collapsed on one place (ParticleFilterOptions::
+// tracking_min_particles).
+TEST(ParticleFilter, KldKeepsTheTrackingFloorFromAKnownPoseOnly) {
+  const Map m = test::room_map();
+  const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
+  ParticleFilterOptions o = small(3000, 19);
+  o.adaptive = true;
+  o.resample_threshold = 1.0;  // resample at every update
+  o.kld.min_particles = 200;
+  o.kld.max_particles = 3000;
+  o.tracking_min_particles = 1200;
+  const auto drive = [&](ParticleFilter& f, WanderDriver& driver, LaserSimulator& laser) {
+    double worst = 0;
+    for (int k = 0; k < 60; ++k) {
+      const DriveStep s = driver.step();
+      f.predict(s.odometry);
+      f.update(laser.scan(s.truth), s.truth.theta);
+      if (k >= 30) worst = std::max(worst, distance(f.estimate().pose, s.truth));
+    }
+    return worst;
+  };
+  {
+    LaserSimulator laser(world, {}, 20);
+    WanderDriver driver(world, {2, 2, 0.3}, {}, 21);
+    ParticleFilter f(m, o);
+    f.init_pose(driver.pose(), 0.1, deg2rad(2));
+    EXPECT_LT(drive(f, driver, laser), 0.3);
+    EXPECT_EQ(f.poses().size(), 1200u);  // collapsed, held at the tracking floor
+  }
+  {
+    LaserSimulator laser(world, {}, 20);
+    WanderDriver driver(world, {2, 2, 0.3}, {}, 21);
+    ParticleFilter f(m, o);
+    f.init_global(driver.pose().theta);
+    EXPECT_LT(drive(f, driver, laser), 0.3);  // found, and collapsed on it
+    EXPECT_LT(f.poses().size(), 1200u);
+    EXPECT_GE(f.poses().size(), 200u);
+  }
+}
+
 }  // namespace
 }  // namespace fleetmap::localization

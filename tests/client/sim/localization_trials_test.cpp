@@ -114,14 +114,18 @@ TEST(LocalizationTrials, KldOptionsReachTheTrialsFilter) {
   s.filter = preset("fast").value();
   EXPECT_EQ(trial_filter(s, "fast").kld.min_particles, preset("fast")->kld.min_particles);
   EXPECT_EQ(trial_filter(s, "search").kld.min_particles, preset("search")->kld.min_particles);
+  EXPECT_EQ(trial_filter(s, "fast").tracking_min_particles, preset("fast")->tracking_min_particles);
   s.kld_min_particles = 700;
+  s.tracking_min_particles = 1;
   s.kld_bin_xy = 0.25;
   s.kld_bin_theta_deg = 5;
   const ParticleFilterOptions f = trial_filter(s, "fast");
   EXPECT_EQ(f.kld.min_particles, 700u);
+  EXPECT_EQ(f.tracking_min_particles, 1u);
   EXPECT_DOUBLE_EQ(f.kld.bin_xy, 0.25);
   EXPECT_NEAR(f.kld.bin_theta, 5 * M_PI / 180, 1e-12);
   EXPECT_EQ(trial_filter(s, "seed").kld.min_particles, 500u);  // the baseline stays the seed's
+  EXPECT_EQ(trial_filter(s, "seed").tracking_min_particles, 0u);
 }
 
 // In a hall of pillars on a grid, starts with a twin (twin_places.h) are called ambiguous
