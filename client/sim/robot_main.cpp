@@ -97,9 +97,10 @@ int main(int argc, char** argv) {
   app.add_option("--laser-sigma", o.laser.sigma, "laser noise sigma_L (m)")->capture_default_str();
   app.add_option("--people", o.laser.people, "unmodelled obstacles (people) per scan")->capture_default_str();
   app.add_option("--localizer", o.localizer,
-                 "global localization's filter preset: search, or fast (one search at the end of the look around, "
-                 "people left out of it; docs/localization.md)")
-      ->check(CLI::IsMember({"search", "fast"}))
+                 "global localization's filter preset: fast (one coarse-to-fine search at the end of the look "
+                 "around, people left out of it; under 1 s), or search (a search per scan; about 10 s); "
+                 "docs/localization.md")
+      ->check(CLI::IsMember({"fast", "search"}))
       ->capture_default_str();
   app.add_option("--particles", o.global_particles, "particles for global localization (NP)")->capture_default_str();
   app.add_option("--tracking-particles", o.tracking_particles, "max particles while tracking (KLD)")->capture_default_str();

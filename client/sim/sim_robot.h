@@ -25,9 +25,11 @@ struct SimRobotOptions {
   double laser_height = 0.3;         // hL
   localization::LaserSimulatorOptions laser;  // NL, FOV, sigma_L, people
   double compass_sigma_deg = 1.0;    // compass noise (the filter assumes +-3 degrees)
-  // The filter preset of global localization (localization_trials.h, preset()): search
-  // or fast (docs/localization.md, "Presets").
-  std::string localizer = "search";
+  // The filter preset of global localization (localization_trials.h, preset()): fast or
+  // search (docs/localization.md, "Presets"). fast: under a second per localization where
+  // search takes ten, and as often right on a fresh seed (docs/localization.md, "The
+  // robot's default: fast").
+  std::string localizer = "fast";
   size_t global_particles = 6000;    // NP of global localization
   size_t tracking_particles = 1000;  // max NP once localized (KLD sampling)
   double step_s = 0.1;               // simulation and control period

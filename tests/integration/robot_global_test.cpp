@@ -40,16 +40,18 @@ TEST(RobotGlobal, BootsWithoutAPoseLocalizesAndDrivesToAGoal) {
   // An operator's initial pose 14 m off: --global must not use it (a robot tracking from
   // it would report a pose near (-10, 8.6), not near the truth).
   ASSERT_EQ(run("fleetmap", "pose-ini " + name + " -10 8.6 0").exit_code, 0);
-  // The upper wing's corridor. The look around turns 60 degrees before each scan; this
-  // seed localizes after 4, so the robot then faces +x, along the corridor to the goal
-  // (pure pursuit does not turn in place first: facing away it arcs into a wall).
+  // The upper wing's corridor. The look around turns 60 degrees before each scan; the
+  // default localizer (fast) reports after 9 on this seed, so the robot then faces -60
+  // degrees, towards the goal along the corridor (pure pursuit does not turn in place
+  // first: facing away it arcs into a wall).
   const double sx = -24, sy = 8.6, stheta = 2.0944, gx = -14, gy = 8.6;
   ServerProcess server("", "glob_server.log");
   RobotSimProcess robot(name, "--global --start " + std::to_string(sx) + " " + std::to_string(sy) + " " +
                                   std::to_string(stheta) + " --speed 1.5 --tracking-particles 500 --seed 3");
 
-  // Localized: the first pose it reports is the truth's, not the operator's. About 10 s of
-  // computation on a quiet machine (docs/localization.md); the bound leaves room for a loaded one.
+  // Localized: the first pose it reports is the truth's, not the operator's. Under a second
+  // of computation on a quiet machine (docs/localization.md); the bound leaves room for a
+  // loaded one.
   ASSERT_TRUE(wait_until([&] { return reported_cm_from(name, sx, sy) >= 0; }, std::chrono::seconds(120),
                          std::chrono::milliseconds(200)))
       << robot.log();
@@ -63,8 +65,8 @@ TEST(RobotGlobal, BootsWithoutAPoseLocalizesAndDrivesToAGoal) {
   EXPECT_LT(reported_cm_from(name, gx, gy), 60) << robot.log();
 }
 
-// The fast localizer (--localizer fast) with people walking in the scans: one search at
-// the end of the look around, people left out of it. It cannot localize before its
+// The fast localizer (the default, named here) with people walking in the scans: one
+// search at the end of the look around, people left out of it. It cannot localize before its
 // seventh scan (the six turns come first); the pose it reports is the truth's.
 TEST(RobotGlobal, TheFastLocalizerBootsAmongPeople) {
   ASSERT_TRUE(import_real_map_once("glob_gdc1", "GDC1.vectormap.txt"));
