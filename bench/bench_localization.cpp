@@ -231,6 +231,10 @@ int main(int argc, char** argv) {
                  "KLD sampling's fewest particles, the global phase's and tracking's where --tracking-min-particles "
                  "is lower, for every preset but seed (default: the preset's)")
       ->check(CLI::PositiveNumber);
+  app.add_option("--tracking-sigma-m", s.tracking_sigma_m,
+                 "metres: the sensor model's sigma_m from a known pose on (tracking), for every preset but seed "
+                 "(default: the preset's, sigma_m throughout)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--tracking-min-particles", s.tracking_min_particles,
                  "KLD sampling's fewest particles from a known pose on (tracking), for every preset but seed "
                  "(default: the preset's; 1: the global phase's)")

@@ -26,6 +26,12 @@ SensorModelOptions sensor_options(const ParticleFilterOptions& o) {
   return s;
 }
 
+SensorModelOptions tracking_sensor_options(const ParticleFilterOptions& o) {
+  SensorModelOptions s = sensor_options(o);
+  if (o.tracking_sigma_m > 0) s.sigma_m = o.tracking_sigma_m;
+  return s;
+}
+
 SensorModelOptions global_sensor_options(const ParticleFilterOptions& o) {
   SensorModelOptions s = sensor_options(o);
   if (o.global_short_beyond >= 0) s.short_beyond = o.global_short_beyond;
@@ -156,7 +162,7 @@ ParticleFilter::ParticleFilter(const Map& map, ParticleFilterOptions options)
 ParticleFilter::ParticleFilter(const Map& map, std::shared_ptr<const RayCaster> caster, ParticleFilterOptions options)
     : options_(options),
       beams_(evenly_spread_angles(options.beams, options.fov)),
-      sensor_(sensor_options(options)),
+      sensor_(tracking_sensor_options(options)),
       global_sensor_(global_sensor_options(options)),
       search_sensor_(search_sensor_options(options)),
       motion_(options.motion),

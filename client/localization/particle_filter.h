@@ -170,6 +170,9 @@ struct ParticleFilterOptions {
   // the global search it bought nothing and cost a third of the time (docs/localization.md,
   // "A tracking cloud of 1 000"). 0: kld.min_particles throughout.
   size_t tracking_min_particles = 0;
+  // The sensor model's sigma_m from init_pose or set_particles on (metres; not positive:
+  // sensor.sigma_m throughout).
+  double tracking_sigma_m = -1;
   double cluster_cell = 1.0;              // metres, for PoseEstimate::pose
   double converged_xy = 0.5;              // metres of spread under which
   double converged_theta = deg2rad(5.0);  // and radians: PoseEstimate::converged

@@ -673,6 +673,7 @@ ParticleFilterOptions trial_filter(const TrialSettings& base, const std::string&
   if (base.roughening_stage_decay >= 0) f.roughening_stage_decay = base.roughening_stage_decay;
   if (base.kld_min_particles > 0) f.kld.min_particles = base.kld_min_particles;
   if (base.tracking_min_particles > 0) f.tracking_min_particles = base.tracking_min_particles;
+  if (base.tracking_sigma_m > 0) f.tracking_sigma_m = base.tracking_sigma_m;
   if (base.kld_bin_xy > 0) f.kld.bin_xy = base.kld_bin_xy;
   if (base.kld_bin_theta_deg > 0) f.kld.bin_theta = deg2rad(base.kld_bin_theta_deg);
   return f;

@@ -120,6 +120,8 @@ struct TrialSettings {
   // ParticleFilterOptions::tracking_min_particles, KLD's floor from a known pose on (0: the
   // preset's).
   size_t tracking_min_particles = 0;
+  // ParticleFilterOptions::tracking_sigma_m (metres; not positive: the preset's).
+  double tracking_sigma_m = -1;
   double kld_bin_xy = -1;
   double kld_bin_theta_deg = -1;
   // Tracking also drives a fixed cloud of NP particles beside the KLD one (report_preset).

@@ -635,5 +635,31 @@ TEST(ParticleFilter, KldKeepsTheTrackingFloorFromAKnownPoseOnly) {
   }
 }
 
+// tracking_sigma_m sharpens the sensor model from a known pose on; the global phase keeps
+// sensor.sigma_m, particle for particle.
+TEST(ParticleFilter, TrackingSigmaSharpensTrackingOnly) {
+  const Map m = test::room_map();
+  const auto world = std::make_shared<GridRayCaster>(m, RayCasterOptions{0.3, 15.0});
+  LaserSimulator laser(world, {}, 22);
+  const Pose truth{6.5, 8.0, -0.4};
+  const std::vector<double> scan = laser.scan(truth);
+  ParticleFilterOptions broad = small(2000, 23);
+  broad.resample_threshold = 0;  // keep the weights: the spread is theirs
+  ParticleFilterOptions sharp = broad;
+  sharp.tracking_sigma_m = 0.15;
+  ParticleFilter a(m, broad), b(m, sharp);
+  a.init_pose(truth, 0.3, 0.05);
+  b.init_pose(truth, 0.3, 0.05);
+  a.update(scan, truth.theta);
+  b.update(scan, truth.theta);
+  EXPECT_LT(b.estimate().spread_xy, 0.7 * a.estimate().spread_xy);
+  ParticleFilter c(m, broad), d(m, sharp);
+  c.init_global(truth.theta);
+  d.init_global(truth.theta);
+  c.update(scan, truth.theta);
+  d.update(scan, truth.theta);
+  EXPECT_EQ(c.weights(), d.weights());
+}
+
 }  // namespace
 }  // namespace fleetmap::localization
