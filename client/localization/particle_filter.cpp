@@ -127,6 +127,12 @@ ParticleFilterOptions ParticleFilterOptions::fast_search() {
   // nothing and took the campus's p95 from 0.88 to 1.23 s (docs/localization.md, "A
   // tracking cloud of 1 000").
   o.tracking_min_particles = 1000;
+  // Tracking weighs on a sharper normal term than the seed's 0.5 m: the laser's noise is
+  // 5 cm, and 0.5 m left a cloud 0.2 m wide among people with few walls in view. 0.35 m:
+  // 30 people, 14 drives of 300 m, mean RMS 0.067 -> 0.056 m, 1 000 m 0.128 -> 0.082 m;
+  // 0.25 m jumped by up to 0.55 m on some drives (docs/localization.md, "A sharper sensor
+  // model for tracking"). The global phase keeps 0.5 m.
+  o.tracking_sigma_m = 0.35;
   // Six annealing stages instead of three: the searched cloud is weighed on seven scans
   // at once, and three stages at ESS 30 % left part of them unapplied, so look-alike
   // places were still heavy after the three steps driven (docs/localization.md, "Six

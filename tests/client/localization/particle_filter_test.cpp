@@ -211,21 +211,22 @@ TEST(ParticleFilter, TheGlobalPhaseWeighsWithItsOwnShortTerm) {
   for (size_t j = 40; j <= 90; ++j) scan[j] -= 0.4;
   // The scan's log-likelihood at the truth under the flat term from `beyond`.
   // r.o, not o: Debian 12's clang cannot capture a structured binding in a lambda.
-  const auto scored = [&](double beyond, const std::vector<uint8_t>& front) {
+  const auto scored = [&](double beyond, const std::vector<uint8_t>& front, double sigma_m) {
     SensorModelOptions so = r.o.sensor;
     so.rmax = r.o.laser.rmax;
     so.short_beyond = beyond;
+    if (sigma_m > 0) so.sigma_m = sigma_m;
     return SensorModel(so).log_weight(scan.data(), wall.data(), scan.size(), front.empty() ? nullptr : front.data());
   };
   ParticleFilter f(m, world, o);
   f.init_global(truth.theta);
   f.update(scan, truth.theta);
   const double global_phase = f.recent_log_likelihood(truth);
-  EXPECT_NEAR(global_phase, scored(o.global_short_beyond, f.last_foreground()), 1e-9);
+  EXPECT_NEAR(global_phase, scored(o.global_short_beyond, f.last_foreground(), -1), 1e-9);
   f.init_pose(truth, 0.05, 0.02);
   f.update(scan, truth.theta);
   const double tracking = f.recent_log_likelihood(truth);
-  EXPECT_NEAR(tracking, scored(o.sensor.short_beyond, f.last_foreground()), 1e-9);
+  EXPECT_NEAR(tracking, scored(o.sensor.short_beyond, f.last_foreground(), o.tracking_sigma_m), 1e-9);
   EXPECT_GT(std::fabs(global_phase - tracking), 1.0);  // the premise: the two models differ on it
 }
 
@@ -443,6 +444,7 @@ SplitCloud three_scans_on_a_split_cloud(double cap, double stage_decay) {
   o.seed = 31;
   o.roughening_max_xy = cap;
   o.roughening_stage_decay = stage_decay;
+  o.tracking_sigma_m = -1;  // set_particles stands in for the search: the global phase's model
   ParticleFilter f(m, world, o);
   LaserSimulator laser(world, {}, 32);
   std::mt19937_64 rng(33);
