@@ -233,7 +233,7 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--tracking-sigma-m", s.tracking_sigma_m,
                  "metres: the sensor model's sigma_m from a known pose on (tracking), for every preset but seed "
-                 "(default: the preset's, sigma_m throughout)")
+                 "(default: the preset's; without one, sigma_m throughout)")
       ->check(CLI::PositiveNumber);
   app.add_option("--tracking-min-particles", s.tracking_min_particles,
                  "KLD sampling's fewest particles from a known pose on (tracking), for every preset but seed "

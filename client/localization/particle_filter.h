@@ -171,7 +171,8 @@ struct ParticleFilterOptions {
   // "A tracking cloud of 1 000"). 0: kld.min_particles throughout.
   size_t tracking_min_particles = 0;
   // The sensor model's sigma_m from init_pose or set_particles on (metres; not positive:
-  // sensor.sigma_m throughout).
+  // sensor.sigma_m throughout). Why apart: a known pose needs no tolerance for a wrong
+  // one, and the global phase's search and annealing were measured on sensor.sigma_m.
   double tracking_sigma_m = -1;
   double cluster_cell = 1.0;              // metres, for PoseEstimate::pose
   double converged_xy = 0.5;              // metres of spread under which

@@ -27,8 +27,8 @@ struct SimRobotOptions {
   double compass_sigma_deg = 1.0;    // compass noise (the filter assumes +-3 degrees)
   // The filter preset of global localization (localization_trials.h, preset()): fast or
   // search (docs/localization.md, "Presets"). fast: under a second per localization where
-  // search takes ten, and as often right on a fresh seed (docs/localization.md, "The
-  // robot's default: fast").
+  // search takes ten, right on a trial in 40 fewer on a quiet floor and far more often
+  // among people (docs/localization.md, "The robot's default: fast").
   std::string localizer = "fast";
   size_t global_particles = 6000;    // NP of global localization
   size_t tracking_particles = 1000;  // max NP once localized (KLD sampling)
