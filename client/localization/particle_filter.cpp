@@ -28,7 +28,7 @@ SensorModelOptions sensor_options(const ParticleFilterOptions& o) {
 
 SensorModelOptions tracking_sensor_options(const ParticleFilterOptions& o) {
   SensorModelOptions s = sensor_options(o);
-  if (o.tracking_sigma_m > 0) s.sigma_m = o.tracking_sigma_m;
+  s.sigma_m = o.tracking_sigma();
   return s;
 }
 
@@ -624,8 +624,7 @@ void ParticleFilter::normalize_weights() {
 }
 
 void ParticleFilter::resample() {
-  KldOptions kld = options_.kld;
-  if (!from_global_) kld.min_particles = std::max(kld.min_particles, options_.tracking_min_particles);
+  const KldOptions kld = from_global_ ? options_.kld : options_.tracking_kld();
   const std::vector<size_t> idx = options_.adaptive ? kld_resample(poses_, weights_, kld, rng_)
                                                     : low_variance_resample(weights_, options_.particles, rng_);
   std::vector<Pose> next(idx.size());

@@ -50,6 +50,7 @@
 // Reproducible: every random draw comes from std::mt19937_64 generators seeded from
 // `seed` (one per thread chunk, one for the sequential steps); the same seed, options,
 // thread count and inputs give the same particles. The filter holds no clock.
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -174,6 +175,13 @@ struct ParticleFilterOptions {
   // sensor.sigma_m throughout). Why apart: a known pose needs no tolerance for a wrong
   // one, and the global phase's search and annealing were measured on sensor.sigma_m.
   double tracking_sigma_m = -1;
+  // What tracking runs with: kld with the tracking floor, and sigma_m.
+  KldOptions tracking_kld() const {
+    KldOptions k = kld;
+    k.min_particles = std::min(std::max(k.min_particles, tracking_min_particles), k.max_particles);
+    return k;
+  }
+  double tracking_sigma() const { return tracking_sigma_m > 0 ? tracking_sigma_m : sensor.sigma_m; }
   double cluster_cell = 1.0;              // metres, for PoseEstimate::pose
   double converged_xy = 0.5;              // metres of spread under which
   double converged_theta = deg2rad(5.0);  // and radians: PoseEstimate::converged

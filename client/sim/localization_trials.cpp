@@ -779,8 +779,7 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
       char kind[64] = "fixed NP    ";
       if (adaptive)
         std::snprintf(kind, sizeof kind, "KLD adaptive (at least %zu, sigma_m %.2g m)",
-                      std::min(std::max(f.kld.min_particles, f.tracking_min_particles), f.particles),
-                      f.tracking_sigma_m > 0 ? f.tracking_sigma_m : f.sensor.sigma_m);
+                      f.tracking_kld().min_particles, f.tracking_sigma());
       std::fprintf(out,
                    "tracking %s, %.0f m, %d updates: RMS %.3f m (goal < 0.10 m), max %.3f m, RMS heading %.2f deg, "
                    "mean %.0f particles, %.1f Hz\n",

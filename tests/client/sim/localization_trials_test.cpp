@@ -117,11 +117,14 @@ TEST(LocalizationTrials, KldOptionsReachTheTrialsFilter) {
   EXPECT_EQ(trial_filter(s, "fast").tracking_min_particles, preset("fast")->tracking_min_particles);
   s.kld_min_particles = 700;
   s.tracking_min_particles = 1;
+  s.tracking_sigma_m = 0.2;
   s.kld_bin_xy = 0.25;
   s.kld_bin_theta_deg = 5;
   const ParticleFilterOptions f = trial_filter(s, "fast");
   EXPECT_EQ(f.kld.min_particles, 700u);
   EXPECT_EQ(f.tracking_min_particles, 1u);
+  EXPECT_DOUBLE_EQ(f.tracking_sigma(), 0.2);
+  EXPECT_DOUBLE_EQ(trial_filter(s, "seed").tracking_sigma(), preset("seed")->sensor.sigma_m);
   EXPECT_DOUBLE_EQ(f.kld.bin_xy, 0.25);
   EXPECT_NEAR(f.kld.bin_theta, 5 * M_PI / 180, 1e-12);
   EXPECT_EQ(trial_filter(s, "seed").kld.min_particles, 500u);  // the baseline stays the seed's
