@@ -103,6 +103,27 @@ ParticleFilterOptions ParticleFilterOptions::robust_search() {
   ParticleFilterOptions o = robust();
   o.global_search = true;
   o.global_density = 0;  // the search replaces the uniform cloud
+  // Tracking among people (sensor_model.h's short_beyond): a beam stopped more than 0.3 m
+  // short counts as 0.3 m short. Without it, 30 people hid the walls and pulled the cloud
+  // onto them: 1.3 m RMS over 300 m of GDC1. 0.3 m, not 0.5: a person at a wall stops
+  // beams 0.45-0.65 m short, and at 0.5 those beams still pulled the cloud towards the
+  // wall (docs/localization.md, "The flat short term from 0.3 m"). The global phase keeps
+  // eq. (5) as written: on open ground a wrong place calls every far wall it lacks a
+  // person, and the campus's global tests failed with it ("People in the scans").
+  o.sensor.short_beyond = 0.3;
+  o.global_short_beyond = 0;
+  // Tracking weighs on a sharper normal term than the seed's 0.5 m: the laser's noise is
+  // 5 cm, and 0.5 m left a cloud 0.2 m wide among people with few walls in view. 0.35 m:
+  // 30 people, 14 drives of 300 m, mean RMS 0.067 -> 0.056 m, 1 000 m 0.128 -> 0.082 m;
+  // 0.25 m jumped by up to 0.55 m on some drives ("A sharper sensor model for tracking").
+  // The global phase keeps 0.5 m.
+  o.tracking_sigma_m = 0.35;
+  // KLD's floor while tracking (where the preset is adaptive, and in SimRobot, which
+  // tracks adaptively with every preset); the global phase's stays KldOptions' 500. Among
+  // 30 people 1 000 tracked better (GDC1 0.116 -> 0.090 m), but after the global search
+  // it bought nothing and took the campus's p95 from 0.88 to 1.23 s ("A tracking cloud
+  // of 1 000").
+  o.tracking_min_particles = 1000;
   return o;
 }
 
@@ -117,22 +138,13 @@ ParticleFilterOptions ParticleFilterOptions::fast_search() {
   // People in the open sank the truth below 500 wrong places: GDC1 with 10 people 50 -> 68 %
   // (docs/localization.md, "People left out of the search").
   o.search_drops_foreground = true;
-  // The flat short term (below) lets a wrong place on open ground call the far walls
-  // people: the search's rerank and the weighing of its cloud grant it only to foreground
-  // beams (docs/localization.md, "Short only in front"; campus 80.5 -> 87 %).
+  // The flat short term (global_short_beyond below) lets a wrong place on open ground call
+  // the far walls people: the search's rerank and the weighing of its cloud grant it only
+  // to foreground beams (docs/localization.md, "Short only in front"; campus 80.5 -> 87 %).
   o.search_short_only_foreground = true;
   o.adaptive = true;            // KLD: the collapsed cloud shrinks towards kld.min_particles
-  // The global phase's floor stays KldOptions' 500; tracking keeps 1 000. Among 30 people
-  // 1 000 tracked better (GDC1 0.116 -> 0.090 m), but after the global search it bought
-  // nothing and took the campus's p95 from 0.88 to 1.23 s (docs/localization.md, "A
-  // tracking cloud of 1 000").
-  o.tracking_min_particles = 1000;
-  // Tracking weighs on a sharper normal term than the seed's 0.5 m: the laser's noise is
-  // 5 cm, and 0.5 m left a cloud 0.2 m wide among people with few walls in view. 0.35 m:
-  // 30 people, 14 drives of 300 m, mean RMS 0.067 -> 0.056 m, 1 000 m 0.128 -> 0.082 m;
-  // 0.25 m jumped by up to 0.55 m on some drives (docs/localization.md, "A sharper sensor
-  // model for tracking"). The global phase keeps 0.5 m.
-  o.tracking_sigma_m = 0.35;
+  // Tracking's floor of 1 000 particles, sharper sigma_m (0.35 m) and flat short term
+  // (0.3 m) come from robust_search().
   // Six annealing stages instead of three: the searched cloud is weighed on seven scans
   // at once, and three stages at ESS 30 % left part of them unapplied, so look-alike
   // places were still heavy after the three steps driven (docs/localization.md, "Six
@@ -144,16 +156,10 @@ ParticleFilterOptions ParticleFilterOptions::fast_search() {
   // diffusion shrinking by stage": the campus gained on three seeds, 94.0 -> 95.0 % on
   // the fresh one).
   o.roughening_stage_decay = 0.7;
-  // People in the scans (sensor_model.h, docs/localization.md). Not yet in robust() or
-  // robust_search(): with it their campus tests (seed 6, seed 3) fail without people.
-  // 0.3 m, not 0.5: a person at a wall stops beams 0.45-0.65 m short, and at 0.5 those
-  // beams still pulled the cloud towards the wall. Among 30 people, seven 300 m drives:
-  // tracking RMS 0.10-0.65 m -> 0.04-0.27 m (docs/localization.md, "The flat short term
-  // from 0.3 m").
-  o.sensor.short_beyond = 0.3;
-  // Global localization keeps 0.5: among 10 people 0.3 gave 156 of 200 trials the right
-  // answer where 0.5 gives 164, and 16 wrong poses where 0.5 gives 10; without people
-  // the same within a trial ("The global phase from 0.5 m").
+  // The global phase takes the flat short term from 0.5 m (robust_search(): none), since
+  // the search's rerank grants it to people only. Among 10 people 0.3 gave 156 of 200
+  // trials the right answer where 0.5 gives 164, and 16 wrong poses where 0.5 gives 10;
+  // without people the same within a trial ("The global phase from 0.5 m").
   o.global_short_beyond = 0.5;
   // Left as they were (docs/localization.md, "The search's misses on the campus
   // (2026-12-05)"): turn_in_place_sds 3 and roughening_max_xy 0.05 each saved campus misses
