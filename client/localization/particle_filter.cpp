@@ -26,12 +26,6 @@ SensorModelOptions sensor_options(const ParticleFilterOptions& o) {
   return s;
 }
 
-SensorModelOptions tracking_sensor_options(const ParticleFilterOptions& o) {
-  SensorModelOptions s = sensor_options(o);
-  s.sigma_m = o.tracking_sigma();
-  return s;
-}
-
 SensorModelOptions global_sensor_options(const ParticleFilterOptions& o) {
   SensorModelOptions s = sensor_options(o);
   if (o.global_short_beyond >= 0) s.short_beyond = o.global_short_beyond;
@@ -88,6 +82,12 @@ Eigen::Matrix2d position_scatter(const std::vector<Pose>& poses, const Pose& mea
 uint64_t cell_key(int64_t ix, int64_t iy) { return static_cast<uint64_t>(ix) << 32 ^ static_cast<uint32_t>(iy); }
 
 }  // namespace
+
+SensorModelOptions ParticleFilterOptions::tracking_sensor() const {
+  SensorModelOptions s = sensor_options(*this);
+  s.sigma_m = tracking_sigma();
+  return s;
+}
 
 ParticleFilterOptions ParticleFilterOptions::robust() {
   ParticleFilterOptions o;
@@ -177,7 +177,7 @@ ParticleFilter::ParticleFilter(const Map& map, ParticleFilterOptions options)
 ParticleFilter::ParticleFilter(const Map& map, std::shared_ptr<const RayCaster> caster, ParticleFilterOptions options)
     : options_(options),
       beams_(evenly_spread_angles(options.beams, options.fov)),
-      sensor_(tracking_sensor_options(options)),
+      sensor_(options.tracking_sensor()),
       global_sensor_(global_sensor_options(options)),
       search_sensor_(search_sensor_options(options)),
       motion_(options.motion),

@@ -182,6 +182,9 @@ struct ParticleFilterOptions {
     return k;
   }
   double tracking_sigma() const { return tracking_sigma_m > 0 ? tracking_sigma_m : sensor.sigma_m; }
+  // The sensor model tracking weighs with: sensor, one RMAX (the laser's range is the
+  // uniform term's width), and tracking_sigma().
+  SensorModelOptions tracking_sensor() const;
   double cluster_cell = 1.0;              // metres, for PoseEstimate::pose
   double converged_xy = 0.5;              // metres of spread under which
   double converged_theta = deg2rad(5.0);  // and radians: PoseEstimate::converged

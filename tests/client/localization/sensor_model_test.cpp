@@ -209,14 +209,14 @@ TEST(SensorModel, PeopleAgainstAWallDoNotPullThePoseOntoThem) {
 }
 
 TEST(SensorModel, BothRobotLocalizersTrackAmongPeople) {
-  // What each of fleetmap-robot's localizers weighs with while tracking (sigma_m from
-  // tracking_sigma_m): people in front of a wall and people against it must not pull the
-  // pose onto them. `search` tracked 1.3 m off among 30 people before it had the flat
-  // short term (docs/localization.md, "The search preset tracks among people").
+  // What each of fleetmap-robot's localizers weighs with while tracking
+  // (ParticleFilterOptions::tracking_sensor(), as the filter builds it): people in front
+  // of a wall and people against it must not pull the pose onto them. `search` tracked
+  // 1.3 m off among 30 people before it had the flat short term (docs/localization.md,
+  // "The search preset tracks among people").
   for (const ParticleFilterOptions& preset :
        {ParticleFilterOptions::fast_search(), ParticleFilterOptions::robust_search()}) {
-    SensorModelOptions tracking = preset.sensor;
-    tracking.sigma_m = preset.tracking_sigma();
+    const SensorModelOptions tracking = preset.tracking_sensor();
     const SensorModel model(tracking);
     EXPECT_GT(crowd_score(model, 0.0), crowd_score(model, 0.3)) << "crowd 1 m in front, short_beyond "
                                                                   << tracking.short_beyond;
