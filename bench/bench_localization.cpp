@@ -287,6 +287,15 @@ int main(int argc, char** argv) {
                  "scans, may say it; the baseline of 2 or more is 1)")
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
+  app.add_option("--lost-wall-persistence", s.lost.unmapped_wall_persistence,
+                 "metres: a straight piece the map lacks counts against the pose only where it stood within this of "
+                 "the previous scan's pieces (the lost detector; 0: from its first scan; the baseline of one above 0 is 0)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 5.0));
+  app.add_option("--lost-wall-memory", s.lost.unmapped_wall_memory,
+                 "earlier scans whose straight pieces a piece may match (--lost-wall-persistence)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100));
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();
   app.add_option("--drive-min-walls", s.drive_min_walls,
                  "every drive keeps where this share of 36 rays around meets a wall within the laser's range "

@@ -1,7 +1,10 @@
 #include "client/localization/lost_detector.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "common/geometry/segment_distance.h"
 
 namespace fleetmap::localization {
 
@@ -30,6 +33,10 @@ ScanEvidence scan_evidence(const RayCaster& caster, const Pose& pose, const std:
     const double d = ranges[j] - cast[j];
     if (stopped_short[j]) {
       e.against += wall[j];
+      if (wall[j]) {
+        if (j == 0 || !wall[j - 1] || !stopped_short[j - 1]) e.unmapped_walls.emplace_back();
+        e.unmapped_walls.back().push_back({ranges[j] * std::cos(beams[j]), ranges[j] * std::sin(beams[j])});
+      }
     } else if (std::abs(d) <= tolerance) {
       ++e.agree;
       if (cast[j] >= open_beyond) ++e.open;
@@ -40,7 +47,44 @@ ScanEvidence scan_evidence(const RayCaster& caster, const Pose& pose, const std:
   return e;
 }
 
-bool LostDetector::update(const ScanEvidence& evidence) {
+size_t LostDetector::fleeting_wall_returns(const std::vector<std::vector<Point>>& walls, const Odometry& moved) {
+  // The earlier scans' pieces, seen from where the robot is now.
+  const double c = std::cos(moved.dtheta), s = std::sin(moved.dtheta);
+  for (std::vector<std::vector<Point>>& scan : previous_walls_)
+    for (std::vector<Point>& run : scan)
+      for (Point& p : run) {
+        const double x = p.x - moved.dx, y = p.y - moved.dy;
+        p = {c * x + s * y, -s * x + c * y};
+      }
+  const double d2 = options_.unmapped_wall_persistence * options_.unmapped_wall_persistence;
+  const auto stood = [&](Point p) {
+    for (const std::vector<std::vector<Point>>& scan : previous_walls_)
+      for (const std::vector<Point>& run : scan)
+        for (size_t i = 0; i < run.size(); ++i)
+          if (point_segment_distance2(p, run[i], run[std::min(i + 1, run.size() - 1)]) <= d2) return true;
+    return false;
+  };
+  size_t fleeting = 0;
+  for (const std::vector<Point>& run : walls) {
+    const auto near = static_cast<size_t>(std::count_if(run.begin(), run.end(), stood));
+    if (2 * near < run.size()) fleeting += run.size();
+  }
+  previous_walls_.push_back(walls);
+  while (previous_walls_.size() > options_.unmapped_wall_memory) previous_walls_.pop_front();
+  return fleeting;
+}
+
+bool LostDetector::update(const ScanEvidence& evidence, const Odometry& moved) {
+  if (options_.unmapped_wall_persistence > 0) {
+    ScanEvidence settled = evidence;
+    settled.against -= fleeting_wall_returns(evidence.unmapped_walls, moved);
+    settled.unmapped_walls.clear();
+    return update_counts(settled);
+  }
+  return update_counts(evidence);
+}
+
+bool LostDetector::update_counts(const ScanEvidence& evidence) {
   if (evidence.telling(options_.open_beam_weight) >= static_cast<double>(options_.min_telling_beams))
     return update(evidence.share(options_.open_beam_weight));
   // A blind scan: the averages stay, and time goes on (a low fit that nothing
@@ -74,6 +118,7 @@ void LostDetector::reset() {
   fast_ = slow_ = 0;
   updates_ = below_ = against_below_ = 0;
   lost_ = false;
+  previous_walls_.clear();
 }
 
 }  // namespace fleetmap::localization

@@ -18,6 +18,7 @@
 //   LostDetector d;
 //   d.update(scan_evidence(caster, estimate.pose, beams, ranges, d.options()));
 //   if (d.lost()) { report_lost(); filter.init_global(compass); d.reset(); }
+#include <deque>
 #include <vector>
 
 #include "client/localization/pose.h"
@@ -85,6 +86,15 @@ struct LostDetectorOptions {
   // 30 people it said 3 fewer of 64 kidnaps on GDC1 within 3 s, one of them not at all
   // (docs/localization.md, "A second scan against the pose"), so it stays 1.
   int hold_against = 1;
+  // A straight piece counts against the pose only where it stood in an earlier scan too:
+  // half or more of its returns within this many metres of the pieces of the last
+  // unmapped_wall_memory scans, moved by the odometry (not by the estimate, which a
+  // kidnapped robot's cloud shifts from scan to scan). A wall the map lacks stays where it
+  // is; people walk (1 m/s, 0.2 m between scans), so a row of them whose fronts read as a
+  // wall for one scan has left that line by the next. 0: every piece counts from its
+  // first scan.
+  double unmapped_wall_persistence = 0;
+  size_t unmapped_wall_memory = 5;  // about a second: a crowd may hide a wall for a scan or two
 };
 
 // What one scan says about a pose (scan_evidence below): counts of beams.
@@ -92,6 +102,9 @@ struct ScanEvidence {
   size_t agree = 0;    // within the tolerance of the cast range
   size_t open = 0;     // of those, nothing within range in the map nor read by the laser
   size_t against = 0;  // past a wall of the map, or stopped short on a wall it lacks
+  // The returns stopped short on a wall the map lacks (counted in `against`), in the
+  // laser's frame (x ahead, y to the left): a run of consecutive beams each.
+  std::vector<std::vector<Point>> unmapped_walls;
   // The beams that tell, an open beam counting as open_weight of one.
   double telling(double open_weight) const {
     return static_cast<double>(agree - open + against) + open_weight * static_cast<double>(open);
@@ -119,8 +132,9 @@ class LostDetector {
 
   // One scan's agreement; returns lost().
   bool update(double agreement);
-  // One scan's evidence: its share, unless fewer than min_telling_beams tell.
-  bool update(const ScanEvidence& evidence);
+  // One scan's evidence: its share, unless fewer than min_telling_beams tell. `moved`: the
+  // odometry since the previous scan (unmapped_wall_persistence compares their walls).
+  bool update(const ScanEvidence& evidence, const Odometry& moved = {});
   bool lost() const { return lost_; }
   // After a new initialisation (global or the operator's pose): forget the averages.
   void reset();
@@ -132,11 +146,17 @@ class LostDetector {
  private:
   // The averages' verdict, counted towards hold; `against`: this scan fit below the floor.
   bool judge(bool against);
+  // update(evidence) once the fleeting walls are taken out of it.
+  bool update_counts(const ScanEvidence& evidence);
+  // Of `walls`' returns, those on pieces that stood in none of the last scans
+  // (unmapped_wall_persistence); remembers `walls` for the next.
+  size_t fleeting_wall_returns(const std::vector<std::vector<Point>>& walls, const Odometry& moved);
 
   LostDetectorOptions options_;
   double fast_ = 0, slow_ = 0;
   int updates_ = 0, below_ = 0, against_below_ = 0;
   bool lost_ = false;
+  std::deque<std::vector<std::vector<Point>>> previous_walls_;  // the last scans' pieces, newest last
 };
 
 }  // namespace fleetmap::localization

@@ -396,7 +396,7 @@ struct TrackedRobot {
     update_filter(*filter_, scan, compass_reading(st.truth, s_.compass_sd, filter_->options().compass_half_width, rng_),
                   told_people(laser_, s_, st.truth, scan));
     estimate_ = filter_->estimate().pose;
-    detector_.update(scan_evidence(*world_, estimate_, beams_, scan, s_.lost));
+    detector_.update(scan_evidence(*world_, estimate_, beams_, scan, s_.lost), st.odometry);
     return st.driven;
   }
   // Moved without odometry: from here on the driver starts at `to`.
@@ -571,6 +571,9 @@ void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
   if (s.kidnaps > 0 && s.lost.hold_against > 1)
     detection_baseline("one scan below the floor, then blind ones, enough to say lost (--lost-hold-against 1)",
                        [](LostDetectorOptions& o) { o.hold_against = 1; });
+  if (s.kidnaps > 0 && s.lost.unmapped_wall_persistence > 0)
+    detection_baseline("a wall the map lacks counted from its first scan (--lost-wall-persistence 0)",
+                       [](LostDetectorOptions& o) { o.unmapped_wall_persistence = 0; });
   if (s.kidnaps > 0 && (s.lost.open_beam_weight < 1 || s.lost.fast_alpha != 0.3))
     detection_baseline("open beams counted whole and the fast average at 0.3 (--lost-open-weight 1 --lost-fast-alpha 0.3)",
                        [](LostDetectorOptions& o) {

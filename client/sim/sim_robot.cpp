@@ -109,7 +109,8 @@ void SimRobot::filter_step(const Odometry& odo) {
   filter_->update(scan, compass());
   if (!tracking_) return;
   const loc::PoseEstimate e = filter_->estimate();
-  if (lost_.update(loc::scan_evidence(filter_->ray_caster(), e.pose, filter_->beam_angles(), scan, lost_.options())))
+  if (lost_.update(loc::scan_evidence(filter_->ray_caster(), e.pose, filter_->beam_angles(), scan, lost_.options()),
+                   odo))
     relocalize();
 }
 
