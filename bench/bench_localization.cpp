@@ -289,7 +289,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 100));
   app.add_option("--lost-wall-persistence", s.lost.unmapped_wall_persistence,
                  "metres: a straight piece the map lacks counts against the pose only where it stood within this of "
-                 "the previous scan's pieces (the lost detector; 0: from its first scan; the baseline of one above 0 is 0)")
+                 "the pieces of the last --lost-wall-memory scans, moved by the odometry (the lost detector; 0: from "
+                 "its first scan; the baseline of one above 0 is 0)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 5.0));
   app.add_option("--lost-wall-memory", s.lost.unmapped_wall_memory,
