@@ -16,7 +16,7 @@
 // only a drop well below it, lasting `hold` updates, says lost.
 //
 //   LostDetector d;
-//   d.update(scan_evidence(caster, estimate.pose, beams, ranges, d.options()));
+//   d.update(scan_evidence(caster, estimate.pose, beams, ranges, d.options()), odometry);
 //   if (d.lost()) { report_lost(); filter.init_global(compass); d.reset(); }
 #include <deque>
 #include <vector>
