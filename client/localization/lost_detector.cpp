@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "common/geometry/segment_distance.h"
 
@@ -33,7 +34,9 @@ ScanEvidence scan_evidence(const RayCaster& caster, const Pose& pose, const std:
     const double d = ranges[j] - cast[j];
     if (stopped_short[j]) {
       e.against += wall[j];
-      if (wall[j]) {
+      // The pieces' places, for a detector that compares them across scans (only then:
+      // this runs on every scan).
+      if (wall[j] && options.unmapped_wall_persistence > 0) {
         if (j == 0 || !wall[j - 1] || !stopped_short[j - 1]) e.unmapped_walls.emplace_back();
         e.unmapped_walls.back().push_back({ranges[j] * std::cos(beams[j]), ranges[j] * std::sin(beams[j])});
       }
@@ -47,15 +50,16 @@ ScanEvidence scan_evidence(const RayCaster& caster, const Pose& pose, const std:
   return e;
 }
 
-size_t LostDetector::fleeting_wall_returns(const std::vector<std::vector<Point>>& walls, const Odometry& moved) {
-  // The earlier scans' pieces, seen from where the robot is now.
-  const double c = std::cos(moved.dtheta), s = std::sin(moved.dtheta);
-  for (std::vector<std::vector<Point>>& scan : previous_walls_)
-    for (std::vector<Point>& run : scan)
-      for (Point& p : run) {
-        const double x = p.x - moved.dx, y = p.y - moved.dy;
-        p = {c * x + s * y, -s * x + c * y};
-      }
+size_t LostDetector::fleeting_wall_returns(const std::vector<std::vector<Point>>& walls) {
+  // Every scan's pieces are kept where the odometry alone places them, so that earlier
+  // ones need not move as the robot does.
+  std::vector<std::vector<Point>> placed;
+  placed.reserve(walls.size());
+  for (const std::vector<Point>& run : walls) {
+    placed.emplace_back();
+    placed.back().reserve(run.size());
+    for (const Point p : run) placed.back().push_back(compose(odometry_pose_, Odometry{p.x, p.y, 0}).point());
+  }
   const double d2 = options_.unmapped_wall_persistence * options_.unmapped_wall_persistence;
   const auto stood = [&](Point p) {
     for (const std::vector<std::vector<Point>>& scan : previous_walls_)
@@ -65,23 +69,20 @@ size_t LostDetector::fleeting_wall_returns(const std::vector<std::vector<Point>>
     return false;
   };
   size_t fleeting = 0;
-  for (const std::vector<Point>& run : walls) {
+  for (const std::vector<Point>& run : placed) {
     const auto near = static_cast<size_t>(std::count_if(run.begin(), run.end(), stood));
     if (2 * near < run.size()) fleeting += run.size();
   }
-  previous_walls_.push_back(walls);
+  previous_walls_.push_back(std::move(placed));
   while (previous_walls_.size() > options_.unmapped_wall_memory) previous_walls_.pop_front();
   return fleeting;
 }
 
 bool LostDetector::update(const ScanEvidence& evidence, const Odometry& moved) {
-  if (options_.unmapped_wall_persistence > 0) {
-    ScanEvidence settled = evidence;
-    settled.against -= fleeting_wall_returns(evidence.unmapped_walls, moved);
-    settled.unmapped_walls.clear();
-    return update_counts(settled);
-  }
-  return update_counts(evidence);
+  if (options_.unmapped_wall_persistence <= 0) return update_counts(evidence);
+  odometry_pose_ = compose(odometry_pose_, moved);
+  const size_t fleeting = fleeting_wall_returns(evidence.unmapped_walls);
+  return update_counts({evidence.agree, evidence.open, evidence.against - fleeting, {}});
 }
 
 bool LostDetector::update_counts(const ScanEvidence& evidence) {
@@ -119,6 +120,7 @@ void LostDetector::reset() {
   updates_ = below_ = against_below_ = 0;
   lost_ = false;
   previous_walls_.clear();
+  odometry_pose_ = {};
 }
 
 }  // namespace fleetmap::localization

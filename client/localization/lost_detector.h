@@ -105,7 +105,8 @@ struct ScanEvidence {
   size_t open = 0;     // of those, nothing within range in the map nor read by the laser
   size_t against = 0;  // past a wall of the map, or stopped short on a wall it lacks
   // The returns stopped short on a wall the map lacks (counted in `against`), in the
-  // laser's frame (x ahead, y to the left): a run of consecutive beams each.
+  // laser's frame (x ahead, y to the left): a run of consecutive beams each. Filled only
+  // for a detector that compares them (unmapped_wall_persistence > 0).
   std::vector<std::vector<Point>> unmapped_walls;
   // The beams that tell, an open beam counting as open_weight of one.
   double telling(double open_weight) const {
@@ -150,14 +151,15 @@ class LostDetector {
   bool judge(bool against);
   // update(evidence) once the fleeting walls are taken out of it.
   bool update_counts(const ScanEvidence& evidence);
-  // Of `walls`' returns, those on pieces that stood in none of the last scans
-  // (unmapped_wall_persistence); remembers `walls` for the next.
-  size_t fleeting_wall_returns(const std::vector<std::vector<Point>>& walls, const Odometry& moved);
+  // Of `walls`' returns (the laser's frame at odometry_pose_), those on pieces that stood
+  // in none of the last scans (unmapped_wall_persistence); remembers `walls` for the next.
+  size_t fleeting_wall_returns(const std::vector<std::vector<Point>>& walls);
 
   LostDetectorOptions options_;
   double fast_ = 0, slow_ = 0;
   int updates_ = 0, below_ = 0, against_below_ = 0;
   bool lost_ = false;
+  Pose odometry_pose_;  // the odometry summed since reset(): the frame previous_walls_ are in
   std::deque<std::vector<std::vector<Point>>> previous_walls_;  // the last scans' pieces, newest last
 };
 

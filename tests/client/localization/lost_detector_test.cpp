@@ -76,20 +76,24 @@ TEST(ScanAgreement, AWallTheMapLacksCountsAgainstThePose) {
 }
 
 // The wall's returns come back in the laser's frame, one run of beams: what the detector
-// compares with the next scan's (unmapped_wall_persistence).
+// compares with the next scan's (unmapped_wall_persistence), and only for it.
 TEST(ScanEvidence, PlacesTheReturnsOnAWallTheMapLacks) {
   const auto [room, caster, beams, at, ranges] = RoomScan();
   std::vector<double> wall = ranges;
   for (size_t j = 0; j < beams.size(); ++j)
     if (std::fabs(beams[j]) < 1.0) wall[j] = std::min(wall[j], 2.0 / std::cos(beams[j]));
-  const ScanEvidence e = scan_evidence(caster, at, beams, wall);
+  LostDetectorOptions o;
+  o.unmapped_wall_persistence = 0.1;
+  const ScanEvidence e = scan_evidence(caster, at, beams, wall, o);
   ASSERT_EQ(e.unmapped_walls.size(), 1u);
   EXPECT_EQ(e.unmapped_walls[0].size(), e.against);
   for (const Point& p : e.unmapped_walls[0]) {  // in the laser's frame: 2 m ahead
     EXPECT_NEAR(p.x, 2.0, 1e-9);
     EXPECT_LT(std::fabs(p.y), 2.0 * std::tan(1.0) + 1e-9);
   }
-  EXPECT_TRUE(scan_evidence(caster, at, beams, ranges).unmapped_walls.empty());
+  EXPECT_TRUE(scan_evidence(caster, at, beams, ranges, o).unmapped_walls.empty());
+  // A detector that does not compare them is not handed them.
+  EXPECT_TRUE(scan_evidence(caster, at, beams, wall).unmapped_walls.empty());
 }
 
 // A wall the map lacks stands where it stood; a row of people whose fronts read as one
@@ -99,17 +103,17 @@ TEST(ScanEvidence, PlacesTheReturnsOnAWallTheMapLacks) {
 // still count: this tells a wall from people who cross it, not from people who follow it.
 TEST(LostDetector, AWallTheMapLacksCountsOnceItStaysWherePeopleWalkOn) {
   const RoomScan r;
-  const auto scan_with_front_at = [&r](double metres) {
-    std::vector<double> s = r.ranges;
-    for (size_t j = 0; j < r.beams.size(); ++j)
-      if (std::fabs(r.beams[j]) < 1.0) s[j] = std::min(s[j], metres / std::cos(r.beams[j]));
-    return scan_evidence(r.caster, r.at, r.beams, s);
-  };
-  const ScanEvidence good = scan_evidence(r.caster, r.at, r.beams, r.ranges);
-  ASSERT_EQ(good.against, 0u);
   for (double persistence : {0.1, 0.0}) {
     LostDetectorOptions o;
     o.unmapped_wall_persistence = persistence;
+    const auto scan_with_front_at = [&r, &o](double metres) {
+      std::vector<double> s = r.ranges;
+      for (size_t j = 0; j < r.beams.size(); ++j)
+        if (std::fabs(r.beams[j]) < 1.0) s[j] = std::min(s[j], metres / std::cos(r.beams[j]));
+      return scan_evidence(r.caster, r.at, r.beams, s, o);
+    };
+    const ScanEvidence good = scan_evidence(r.caster, r.at, r.beams, r.ranges, o);
+    ASSERT_EQ(good.against, 0u);
     LostDetector standing(o), walking(o), approached(o);
     for (int i = 0; i < 30; ++i) {
       standing.update(good);
