@@ -26,19 +26,22 @@ ScanEvidence scan_evidence(const RayCaster& caster, const Pose& pose, const std:
   const double tolerance = options.tolerance;
   std::vector<uint8_t> stopped_short(beams.size());
   for (size_t j = 0; j < beams.size(); ++j) stopped_short[j] = ranges[j] - cast[j] < -tolerance ? 1 : 0;
-  const std::vector<uint8_t> wall = options.count_unmapped_walls
-                                        ? unmapped_wall_returns(ranges, beams, stopped_short, options.unmapped_wall)
-                                        : std::vector<uint8_t>(beams.size(), 0);
+  const std::vector<int> wall = options.count_unmapped_walls
+                                    ? unmapped_wall_pieces(ranges, beams, stopped_short, options.unmapped_wall)
+                                    : std::vector<int>(beams.size(), 0);
+  // The pieces' places, for a detector that compares them across scans (only then: this
+  // runs on every scan).
+  const bool place_walls = options.unmapped_wall_persistence > 0 || options.unmapped_wall_seen_through > 0;
   const double open_beyond = caster.options().rmax - tolerance;
   for (size_t j = 0; j < beams.size(); ++j) {
     const double d = ranges[j] - cast[j];
     if (stopped_short[j]) {
-      e.against += wall[j];
-      // The pieces' places, for a detector that compares them across scans (only then:
-      // this runs on every scan).
-      if (wall[j] && options.unmapped_wall_persistence > 0) {
-        if (j == 0 || !wall[j - 1] || !stopped_short[j - 1]) e.unmapped_walls.emplace_back();
-        e.unmapped_walls.back().push_back({ranges[j] * std::cos(beams[j]), ranges[j] * std::sin(beams[j])});
+      if (wall[j] == 0) continue;
+      ++e.against;
+      if (place_walls) {
+        const auto piece = static_cast<size_t>(wall[j]);
+        if (e.unmapped_walls.size() < piece) e.unmapped_walls.resize(piece);
+        e.unmapped_walls[piece - 1].push_back({ranges[j] * std::cos(beams[j]), ranges[j] * std::sin(beams[j])});
       }
     } else if (std::abs(d) <= tolerance) {
       ++e.agree;
@@ -47,42 +50,71 @@ ScanEvidence scan_evidence(const RayCaster& caster, const Pose& pose, const std:
       ++e.against;
     }
   }
+  if (options.unmapped_wall_seen_through > 0) {
+    e.beams = beams;
+    e.ranges = ranges;
+  }
   return e;
 }
 
-size_t LostDetector::fleeting_wall_returns(const std::vector<std::vector<Point>>& walls) {
+bool LostDetector::seen_through(Point p) const {
+  for (const Remembered& scan : previous_) {
+    const std::vector<double>& beams = scan.beams;
+    if (beams.size() < 2) continue;
+    const Odometry local = between(scan.at, Pose{p.x, p.y, 0});
+    const double bearing = std::atan2(local.dy, local.dx);
+    const double range = std::hypot(local.dx, local.dy);
+    // The beam nearest the bearing, if the bearing lies within the scan's field of view.
+    const double half_step = 0.5 * (beams.back() - beams.front()) / static_cast<double>(beams.size() - 1);
+    const auto after = std::lower_bound(beams.begin(), beams.end(), bearing);
+    size_t j = static_cast<size_t>(after - beams.begin());
+    if (j == beams.size() || (j > 0 && bearing - beams[j - 1] < beams[j] - bearing)) --j;
+    if (std::abs(beams[j] - bearing) > half_step) continue;
+    if (scan.ranges[j] > range + options_.unmapped_wall_seen_through) return true;
+  }
+  return false;
+}
+
+size_t LostDetector::fleeting_wall_returns(const ScanEvidence& evidence) {
   // Every scan's pieces are kept where the odometry alone places them, so that earlier
   // ones need not move as the robot does.
-  std::vector<std::vector<Point>> placed;
-  placed.reserve(walls.size());
-  for (const std::vector<Point>& run : walls) {
-    placed.emplace_back();
-    placed.back().reserve(run.size());
-    for (const Point p : run) placed.back().push_back(compose(odometry_pose_, Odometry{p.x, p.y, 0}).point());
+  Remembered now{{}, odometry_pose_, evidence.beams, evidence.ranges};
+  now.walls.reserve(evidence.unmapped_walls.size());
+  for (const std::vector<Point>& run : evidence.unmapped_walls) {
+    now.walls.emplace_back();
+    now.walls.back().reserve(run.size());
+    for (const Point p : run) now.walls.back().push_back(compose(odometry_pose_, Odometry{p.x, p.y, 0}).point());
   }
   const double d2 = options_.unmapped_wall_persistence * options_.unmapped_wall_persistence;
   const auto stood = [&](Point p) {
-    for (const std::vector<std::vector<Point>>& scan : previous_walls_)
-      for (const std::vector<Point>& run : scan)
+    for (const Remembered& scan : previous_)
+      for (const std::vector<Point>& run : scan.walls)
         for (size_t i = 0; i < run.size(); ++i)
           if (point_segment_distance2(p, run[i], run[std::min(i + 1, run.size() - 1)]) <= d2) return true;
     return false;
   };
+  const auto seen = [&](Point p) { return seen_through(p); };
   size_t fleeting = 0;
-  for (const std::vector<Point>& run : placed) {
-    const auto near = static_cast<size_t>(std::count_if(run.begin(), run.end(), stood));
-    if (2 * near < run.size()) fleeting += run.size();
+  for (const std::vector<Point>& run : now.walls) {
+    const auto count = [&run](auto&& test) { return 2 * static_cast<size_t>(std::count_if(run.begin(), run.end(), test)); };
+    if ((options_.unmapped_wall_persistence > 0 && count(stood) < run.size()) ||
+        (options_.unmapped_wall_seen_through > 0 && count(seen) >= run.size()))
+      fleeting += run.size();
   }
-  previous_walls_.push_back(std::move(placed));
-  while (previous_walls_.size() > options_.unmapped_wall_memory) previous_walls_.pop_front();
+  previous_.push_back(std::move(now));
+  while (previous_.size() > options_.unmapped_wall_memory) previous_.pop_front();
   return fleeting;
 }
 
 bool LostDetector::update(const ScanEvidence& evidence, const Odometry& moved) {
-  if (options_.unmapped_wall_persistence <= 0) return update_counts(evidence);
+  if (!compares_walls()) return update_counts(evidence);
   odometry_pose_ = compose(odometry_pose_, moved);
-  const size_t fleeting = fleeting_wall_returns(evidence.unmapped_walls);
-  return update_counts({evidence.agree, evidence.open, evidence.against - fleeting, {}});
+  const size_t fleeting = fleeting_wall_returns(evidence);
+  ScanEvidence counts;
+  counts.agree = evidence.agree;
+  counts.open = evidence.open;
+  counts.against = evidence.against - fleeting;
+  return update_counts(counts);
 }
 
 bool LostDetector::update_counts(const ScanEvidence& evidence) {
@@ -119,7 +151,7 @@ void LostDetector::reset() {
   fast_ = slow_ = 0;
   updates_ = below_ = against_below_ = 0;
   lost_ = false;
-  previous_walls_.clear();
+  previous_.clear();
   odometry_pose_ = {};
 }
 

@@ -97,6 +97,13 @@ struct LostDetectorOptions {
   // on GDC1 were said after 3 s, one never (docs/localization.md, "Walls that stand").
   double unmapped_wall_persistence = 0;
   size_t unmapped_wall_memory = 5;  // about a second: a crowd may hide a wall for a scan or two
+  // A straight piece counts against the pose unless one of the last unmapped_wall_memory
+  // scans saw through where it stands: half or more of its returns lie where a beam of
+  // that scan, placed by the odometry, read more than this many metres farther. A wall
+  // stops every beam that meets it; people step into beams that passed their place a
+  // moment before. A piece that no earlier scan could see past (a robot walled in by a
+  // crowd, its earlier scans blind) counts from its first scan, as with 0 (off).
+  double unmapped_wall_seen_through = 0;
 };
 
 // What one scan says about a pose (scan_evidence below): counts of beams.
@@ -105,9 +112,13 @@ struct ScanEvidence {
   size_t open = 0;     // of those, nothing within range in the map nor read by the laser
   size_t against = 0;  // past a wall of the map, or stopped short on a wall it lacks
   // The returns stopped short on a wall the map lacks (counted in `against`), in the
-  // laser's frame (x ahead, y to the left): a run of consecutive beams each. Filled only
-  // for a detector that compares them (unmapped_wall_persistence > 0).
+  // laser's frame (x ahead, y to the left): one straight piece each, whose beams need not
+  // be consecutive (unmapped_wall_pieces: those grazing it lie between). Filled only
+  // for a detector that compares them (unmapped_wall_persistence or _seen_through > 0).
   std::vector<std::vector<Point>> unmapped_walls;
+  // The scan itself (beam angles, readings), for a detector that looks through it at the
+  // next scans' pieces (unmapped_wall_seen_through > 0); empty otherwise.
+  std::vector<double> beams, ranges;
   // The beams that tell, an open beam counting as open_weight of one.
   double telling(double open_weight) const {
     return static_cast<double>(agree - open + against) + open_weight * static_cast<double>(open);
@@ -151,16 +162,30 @@ class LostDetector {
   bool judge(bool against);
   // update(evidence) once the fleeting walls are taken out of it.
   bool update_counts(const ScanEvidence& evidence);
-  // Of `walls`' returns (the laser's frame at odometry_pose_), those on pieces that stood
-  // in none of the last scans (unmapped_wall_persistence); remembers `walls` for the next.
-  size_t fleeting_wall_returns(const std::vector<std::vector<Point>>& walls);
+  // Of the evidence's wall returns (the laser's frame at odometry_pose_), those on pieces
+  // that stood in none of the last scans (unmapped_wall_persistence) or that one of them
+  // saw through (unmapped_wall_seen_through); remembers the scan for the next.
+  size_t fleeting_wall_returns(const ScanEvidence& evidence);
+  // Whether a beam of an earlier scan read more than unmapped_wall_seen_through past `p`
+  // (the odometry's frame).
+  bool seen_through(Point p) const;
+  bool compares_walls() const {
+    return options_.unmapped_wall_persistence > 0 || options_.unmapped_wall_seen_through > 0;
+  }
 
   LostDetectorOptions options_;
   double fast_ = 0, slow_ = 0;
   int updates_ = 0, below_ = 0, against_below_ = 0;
   bool lost_ = false;
-  Pose odometry_pose_;  // the odometry summed since reset(): the frame previous_walls_ are in
-  std::deque<std::vector<std::vector<Point>>> previous_walls_;  // the last scans' pieces, newest last
+  Pose odometry_pose_;  // the odometry summed since reset(): the frame previous_ is in
+  // One earlier scan, placed by the odometry: its pieces, and where it was taken with what
+  // it read (these only for unmapped_wall_seen_through).
+  struct Remembered {
+    std::vector<std::vector<Point>> walls;
+    Pose at;
+    std::vector<double> beams, ranges;
+  };
+  std::deque<Remembered> previous_;  // the last scans, newest last
 };
 
 }  // namespace fleetmap::localization

@@ -43,7 +43,7 @@ bool meets_head_on(const Point& p, const Point& a, const Point& b, const Unmappe
 // line, within 3 x straightness). A person's front leaves the line over several beams.
 // Otherwise the piece is split at its worst point.
 void mark_straight_pieces(const std::vector<Point>& points, const std::vector<size_t>& beam, size_t first, size_t last,
-                          const UnmappedWallOptions& o, std::vector<uint8_t>& out) {
+                          const UnmappedWallOptions& o, std::vector<int>& out, int& pieces) {
   if (last < first || static_cast<int>(last - first + 1) < o.min_beams) return;
   const Point a = points[first], b = points[last];
   std::vector<double> off(last - first + 1);
@@ -68,30 +68,31 @@ void mark_straight_pieces(const std::vector<Point>& points, const std::vector<si
     if (wall.empty() || static_cast<int>(wall.size()) < o.min_beams ||
         distance(points[wall.front()], points[wall.back()]) < o.min_length)
       return;
-    for (size_t k : wall) out[beam[k]] = 1;
+    ++pieces;
+    for (size_t k : wall) out[beam[k]] = pieces;
     return;
   }
   // Split at the worst point; at an end, drop it.
-  if (worst == first) return mark_straight_pieces(points, beam, first + 1, last, o, out);
-  if (worst == last) return mark_straight_pieces(points, beam, first, last - 1, o, out);
-  mark_straight_pieces(points, beam, first, worst, o, out);
-  mark_straight_pieces(points, beam, worst, last, o, out);
+  if (worst == first) return mark_straight_pieces(points, beam, first + 1, last, o, out, pieces);
+  if (worst == last) return mark_straight_pieces(points, beam, first, last - 1, o, out, pieces);
+  mark_straight_pieces(points, beam, first, worst, o, out, pieces);
+  mark_straight_pieces(points, beam, worst, last, o, out, pieces);
 }
 
 }  // namespace
 
-std::vector<uint8_t> unmapped_wall_returns(const std::vector<double>& ranges, const std::vector<double>& beam_angles,
-                                           const std::vector<uint8_t>& stopped_short,
-                                           const UnmappedWallOptions& options) {
+std::vector<int> unmapped_wall_pieces(const std::vector<double>& ranges, const std::vector<double>& beam_angles,
+                                      const std::vector<uint8_t>& stopped_short, const UnmappedWallOptions& options) {
   if (beam_angles.size() != ranges.size() || stopped_short.size() != ranges.size())
-    throw std::invalid_argument("unmapped_wall_returns: expected one angle and one flag per range (" +
+    throw std::invalid_argument("unmapped_wall_pieces: expected one angle and one flag per range (" +
                                 std::to_string(ranges.size()) + "), got " + std::to_string(beam_angles.size()) +
                                 " and " + std::to_string(stopped_short.size()));
-  std::vector<uint8_t> out(ranges.size(), 0);
+  std::vector<int> out(ranges.size(), 0);
+  int pieces = 0;
   std::vector<Point> run;
   std::vector<size_t> beam;
   auto close_run = [&] {
-    if (!run.empty()) mark_straight_pieces(run, beam, 0, run.size() - 1, options, out);
+    if (!run.empty()) mark_straight_pieces(run, beam, 0, run.size() - 1, options, out, pieces);
     run.clear();
     beam.clear();
   };
@@ -107,6 +108,15 @@ std::vector<uint8_t> unmapped_wall_returns(const std::vector<double>& ranges, co
     beam.push_back(j);
   }
   close_run();
+  return out;
+}
+
+std::vector<uint8_t> unmapped_wall_returns(const std::vector<double>& ranges, const std::vector<double>& beam_angles,
+                                           const std::vector<uint8_t>& stopped_short,
+                                           const UnmappedWallOptions& options) {
+  const std::vector<int> pieces = unmapped_wall_pieces(ranges, beam_angles, stopped_short, options);
+  std::vector<uint8_t> out(pieces.size());
+  std::transform(pieces.begin(), pieces.end(), out.begin(), [](int piece) { return piece > 0 ? 1 : 0; });
   return out;
 }
 

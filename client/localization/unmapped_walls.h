@@ -33,6 +33,14 @@ struct UnmappedWallOptions {
   double max_incidence = 1.308996938995747;  // 75 degrees
 };
 
+// Per beam, the number (1, 2, ...) of the straight piece of min_length or more its return
+// belongs to among the beams flagged in `stopped_short` (consecutive beams; ranges[j] along
+// beam_angles[j]), where it meets the piece head on; 0 elsewhere. A piece's beams need not
+// be consecutive: those that graze it lie between.
+std::vector<int> unmapped_wall_pieces(const std::vector<double>& ranges, const std::vector<double>& beam_angles,
+                                      const std::vector<uint8_t>& stopped_short,
+                                      const UnmappedWallOptions& options = {});
+
 // Per beam, 1 where the return belongs to a straight piece of min_length or more among
 // the beams flagged in `stopped_short` (consecutive beams; ranges[j] along beam_angles[j])
 // and meets it head on.

@@ -574,6 +574,9 @@ void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
   if (s.kidnaps > 0 && s.lost.unmapped_wall_persistence > 0)
     detection_baseline("a wall the map lacks counted from its first scan (--lost-wall-persistence 0)",
                        [](LostDetectorOptions& o) { o.unmapped_wall_persistence = 0; });
+  if (s.kidnaps > 0 && s.lost.unmapped_wall_seen_through > 0)
+    detection_baseline("a wall the map lacks counted though an earlier scan saw through it (--lost-wall-seen-through 0)",
+                       [](LostDetectorOptions& o) { o.unmapped_wall_seen_through = 0; });
   if (s.kidnaps > 0 && (s.lost.open_beam_weight < 1 || s.lost.fast_alpha != 0.3))
     detection_baseline("open beams counted whole and the fast average at 0.3 (--lost-open-weight 1 --lost-fast-alpha 0.3)",
                        [](LostDetectorOptions& o) {

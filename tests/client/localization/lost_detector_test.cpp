@@ -92,8 +92,17 @@ TEST(ScanEvidence, PlacesTheReturnsOnAWallTheMapLacks) {
     EXPECT_LT(std::fabs(p.y), 2.0 * std::tan(1.0) + 1e-9);
   }
   EXPECT_TRUE(scan_evidence(caster, at, beams, ranges, o).unmapped_walls.empty());
-  // A detector that does not compare them is not handed them.
-  EXPECT_TRUE(scan_evidence(caster, at, beams, wall).unmapped_walls.empty());
+  // A detector that does not compare them is not handed them, nor the scan.
+  const ScanEvidence plain = scan_evidence(caster, at, beams, wall);
+  EXPECT_TRUE(plain.unmapped_walls.empty());
+  EXPECT_TRUE(plain.beams.empty() && plain.ranges.empty());
+  // One that looks through earlier scans keeps this one as it was read.
+  o.unmapped_wall_persistence = 0;
+  o.unmapped_wall_seen_through = 0.3;
+  const ScanEvidence kept = scan_evidence(caster, at, beams, wall, o);
+  EXPECT_EQ(kept.unmapped_walls.size(), 1u);
+  EXPECT_EQ(kept.beams, beams);
+  EXPECT_EQ(kept.ranges, wall);
 }
 
 // A wall the map lacks stands where it stood; a row of people whose fronts read as one
@@ -133,6 +142,47 @@ TEST(LostDetector, AWallTheMapLacksCountsOnceItStaysWherePeopleWalkOn) {
     EXPECT_EQ(said_standing, first) << persistence;
     EXPECT_EQ(said_approached, first) << persistence;
     EXPECT_EQ(said_walking, persistence > 0 ? -1 : o.hold - 1) << persistence;
+  }
+}
+
+// People step into beams that passed their place a moment before; a wall stops every beam
+// that meets it. With unmapped_wall_seen_through 0.3 m, a row walking towards the laser
+// (0.2 m a scan) never says lost, as the earlier scans' beams read past its place. A wall
+// that stands says lost once no remembered scan saw past it: 5 scans (the memory) after it
+// appeared where the room's far wall was seen, or at once, as without the option, when
+// the scans before it were blind (a robot walled in by a crowd).
+TEST(LostDetector, AWallTheMapLacksDoesNotCountWhereAnEarlierScanSawThroughIt) {
+  const RoomScan r;
+  for (double seen_through : {0.3, 0.0}) {
+    LostDetectorOptions o;
+    o.unmapped_wall_seen_through = seen_through;
+    const auto scan_with_front_at = [&r, &o](double metres) {
+      std::vector<double> s = r.ranges;
+      for (size_t j = 0; j < r.beams.size(); ++j)
+        if (std::fabs(r.beams[j]) < 1.0) s[j] = std::min(s[j], metres / std::cos(r.beams[j]));
+      return scan_evidence(r.caster, r.at, r.beams, s, o);
+    };
+    const ScanEvidence good = scan_evidence(r.caster, r.at, r.beams, r.ranges, o);
+    const ScanEvidence blind = scan_evidence(r.caster, r.at, r.beams, std::vector<double>(r.beams.size(), 0.3), o);
+    ASSERT_EQ(good.against, 0u);
+    ASSERT_EQ(blind.against + blind.agree, 0u);
+    LostDetector standing(o), walking(o), approached(o), walled_in(o);
+    for (int i = 0; i < 30; ++i)
+      for (LostDetector* d : {&standing, &walking, &approached, &walled_in}) d->update(good);
+    int said_standing = -1, said_walking = -1, said_approached = -1, said_walled_in = -1;
+    for (int k = 0; k < 12; ++k) {
+      if (standing.update(scan_with_front_at(2.0)) && said_standing < 0) said_standing = k;
+      if (walking.update(scan_with_front_at(3.0 - 0.2 * k)) && said_walking < 0) said_walking = k;
+      // The row's scans, but the odometry says the robot drove towards what it sees.
+      if (approached.update(scan_with_front_at(3.0 - 0.2 * k), Odometry{0.2, 0, 0}) && said_approached < 0)
+        said_approached = k;
+      if (walled_in.update(k < 5 ? blind : scan_with_front_at(2.0)) && said_walled_in < 0) said_walled_in = k;
+    }
+    const int memory = static_cast<int>(o.unmapped_wall_memory);
+    EXPECT_EQ(said_standing, seen_through > 0 ? memory + o.hold - 1 : o.hold - 1) << seen_through;
+    EXPECT_EQ(said_approached, seen_through > 0 ? memory + o.hold - 1 : o.hold - 1) << seen_through;
+    EXPECT_EQ(said_walking, seen_through > 0 ? -1 : o.hold - 1) << seen_through;
+    EXPECT_EQ(said_walled_in, 5 + o.hold - 1) << seen_through;
   }
 }
 

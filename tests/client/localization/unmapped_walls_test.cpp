@@ -52,6 +52,28 @@ struct Scan {
   }
 };
 
+// Two walls at different depths are two pieces: each return carries its own wall's
+// number, the same on all of one wall, and unmapped_wall_returns flags exactly those.
+TEST(UnmappedWalls, EachPieceHasItsNumber) {
+  Scan s;
+  s.wall(2.0, -3.0, -0.5);
+  s.wall(4.0, 0.5, 4.0);
+  const std::vector<int> pieces = unmapped_wall_pieces(s.ranges, s.beams, s.stopped_short());
+  const std::vector<uint8_t> flags = unmapped_wall_returns(s.ranges, s.beams, s.stopped_short());
+  int right = -1, left = -1;
+  for (size_t j = 0; j < s.beams.size(); ++j) {
+    EXPECT_EQ(flags[j], pieces[j] > 0 ? 1 : 0) << j;
+    if (pieces[j] == 0) continue;
+    int& mine = s.beams[j] < 0 ? right : left;
+    if (mine < 0) mine = pieces[j];
+    EXPECT_EQ(pieces[j], mine) << j;
+  }
+  EXPECT_GT(right, 0);
+  EXPECT_GT(left, 0);
+  EXPECT_NE(right, left);
+  EXPECT_THROW(unmapped_wall_pieces(s.ranges, s.beams, std::vector<uint8_t>(3, 1)), std::invalid_argument);
+}
+
 TEST(UnmappedWalls, AWallAcrossTheScanIsFound) {
   Scan s;
   s.wall(2.0, -3.0, 3.0);  // 6 m of wall 2 m ahead: the beams meet it within 56 degrees of head on
