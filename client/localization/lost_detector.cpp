@@ -64,7 +64,8 @@ bool LostDetector::seen_through(Point p) const {
     const Odometry local = between(scan.at, Pose{p.x, p.y, 0});
     const double bearing = std::atan2(local.dy, local.dx);
     const double range = std::hypot(local.dx, local.dy);
-    // The beam nearest the bearing, if the bearing lies within the scan's field of view.
+    // The beam nearest the bearing, if the bearing lies within the scan's field of view
+    // (the beams ascending and evenly spread, as evenly_spread_angles gives them).
     const double half_step = 0.5 * (beams.back() - beams.front()) / static_cast<double>(beams.size() - 1);
     const auto after = std::lower_bound(beams.begin(), beams.end(), bearing);
     size_t j = static_cast<size_t>(after - beams.begin());
@@ -80,10 +81,10 @@ size_t LostDetector::fleeting_wall_returns(const ScanEvidence& evidence) {
   // ones need not move as the robot does.
   Remembered now{{}, odometry_pose_, evidence.beams, evidence.ranges};
   now.walls.reserve(evidence.unmapped_walls.size());
-  for (const std::vector<Point>& run : evidence.unmapped_walls) {
+  for (const std::vector<Point>& piece : evidence.unmapped_walls) {
     now.walls.emplace_back();
-    now.walls.back().reserve(run.size());
-    for (const Point p : run) now.walls.back().push_back(compose(odometry_pose_, Odometry{p.x, p.y, 0}).point());
+    now.walls.back().reserve(piece.size());
+    for (const Point p : piece) now.walls.back().push_back(compose(odometry_pose_, Odometry{p.x, p.y, 0}).point());
   }
   const double d2 = options_.unmapped_wall_persistence * options_.unmapped_wall_persistence;
   const auto stood = [&](Point p) {
@@ -95,11 +96,14 @@ size_t LostDetector::fleeting_wall_returns(const ScanEvidence& evidence) {
   };
   const auto seen = [&](Point p) { return seen_through(p); };
   size_t fleeting = 0;
-  for (const std::vector<Point>& run : now.walls) {
-    const auto count = [&run](auto&& test) { return 2 * static_cast<size_t>(std::count_if(run.begin(), run.end(), test)); };
-    if ((options_.unmapped_wall_persistence > 0 && count(stood) < run.size()) ||
-        (options_.unmapped_wall_seen_through > 0 && count(seen) >= run.size()))
-      fleeting += run.size();
+  for (const std::vector<Point>& piece : now.walls) {
+    // Twice the returns that pass `test`, to compare with the piece's size (half or more).
+    const auto twice = [&piece](auto&& test) {
+      return 2 * static_cast<size_t>(std::count_if(piece.begin(), piece.end(), test));
+    };
+    if ((options_.unmapped_wall_persistence > 0 && twice(stood) < piece.size()) ||
+        (options_.unmapped_wall_seen_through > 0 && twice(seen) >= piece.size()))
+      fleeting += piece.size();
   }
   previous_.push_back(std::move(now));
   while (previous_.size() > options_.unmapped_wall_memory) previous_.pop_front();

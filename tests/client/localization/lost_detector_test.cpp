@@ -29,6 +29,16 @@ struct RoomScan {
   RoomScan() { caster.cast_scan(at.point(), at.theta, beams, ranges.data()); }
 };
 
+// Evidence of beam counts alone: no pieces nor scan kept, as from a detector that does
+// not compare scans.
+ScanEvidence counts(size_t agree, size_t open, size_t against) {
+  ScanEvidence e;
+  e.agree = agree;
+  e.open = open;
+  e.against = against;
+  return e;
+}
+
 // The share the detector takes from a scan (LostDetector::update).
 double scan_agreement(const RayCaster& caster, const Pose& pose, const std::vector<double>& beams,
                       const std::vector<double>& ranges, const LostDetectorOptions& options = {}) {
@@ -93,7 +103,9 @@ TEST(ScanEvidence, PlacesTheReturnsOnAWallTheMapLacks) {
   }
   EXPECT_TRUE(scan_evidence(caster, at, beams, ranges, o).unmapped_walls.empty());
   // A detector that does not compare them is not handed them, nor the scan.
-  const ScanEvidence plain = scan_evidence(caster, at, beams, wall);
+  LostDetectorOptions off;
+  off.unmapped_wall_seen_through = 0;
+  const ScanEvidence plain = scan_evidence(caster, at, beams, wall, off);
   EXPECT_TRUE(plain.unmapped_walls.empty());
   EXPECT_TRUE(plain.beams.empty() && plain.ranges.empty());
   // One that looks through earlier scans keeps this one as it was read.
@@ -115,6 +127,7 @@ TEST(LostDetector, AWallTheMapLacksCountsOnceItStaysWherePeopleWalkOn) {
   for (double persistence : {0.1, 0.0}) {
     LostDetectorOptions o;
     o.unmapped_wall_persistence = persistence;
+    o.unmapped_wall_seen_through = 0;  // the walls appear where the room was seen: apart below
     const auto scan_with_front_at = [&r, &o](double metres) {
       std::vector<double> s = r.ranges;
       for (size_t j = 0; j < r.beams.size(); ++j)
@@ -210,7 +223,7 @@ TEST(ScanEvidence, CountsTheOpenBeamsApartAndLeavesThemOutOnRequest) {
   EXPECT_DOUBLE_EQ(e.telling(1.0), static_cast<double>(far.beams.size() - 10));
   EXPECT_DOUBLE_EQ(e.telling(0.0), static_cast<double>(far.beams.size() - 10 - open_left));
   // The share: with the open beams and without them.
-  const ScanEvidence mixed{10, 6, 4, {}};
+  const ScanEvidence mixed = counts(10, 6, 4);
   EXPECT_DOUBLE_EQ(mixed.share(1.0), 10.0 / 14.0);
   EXPECT_DOUBLE_EQ(mixed.share(0.0), 4.0 / 8.0);
   EXPECT_DOUBLE_EQ(ScanEvidence{}.share(1.0), 1.0);
@@ -225,7 +238,7 @@ TEST(ScanEvidence, CountsTheOpenBeamsApartAndLeavesThemOutOnRequest) {
 // those; counted at a quarter they do not, while tracking right, with walls in view,
 // stays found either way.
 TEST(LostDetector, OpenGroundDoesNotOutweighBeamsAgainstTheEstimate) {
-  const ScanEvidence tracking{60, 40, 1, {}}, kidnapped{30, 29, 4, {}};
+  const ScanEvidence tracking = counts(60, 40, 1), kidnapped = counts(30, 29, 4);
   for (double weight : {1.0, 0.25}) {
     LostDetectorOptions o;
     o.open_beam_weight = weight;
@@ -242,7 +255,7 @@ TEST(LostDetector, OpenGroundDoesNotOutweighBeamsAgainstTheEstimate) {
 // full agreement (min_telling_beams 0, as before), the blocked scans lift the fast average
 // back over the bounds and the loss goes unsaid.
 TEST(LostDetector, BlindScansKeepTheAveragesAndLetTimeRun) {
-  const ScanEvidence good{100, 0, 2, {}}, wrong{0, 0, 20, {}}, blind{};
+  const ScanEvidence good = counts(100, 0, 2), wrong = counts(0, 0, 20), blind{};
   for (size_t min_telling : {size_t{1}, size_t{0}}) {
     LostDetectorOptions o;
     o.min_telling_beams = min_telling;
@@ -274,7 +287,7 @@ TEST(LostDetector, BlindScansKeepTheAveragesAndLetTimeRun) {
 // With hold_against 2, one scan against the pose (a crowd in a row read as a wall), then
 // blind ones, is not enough; a second scan against it is, though a good scan came between.
 TEST(LostDetector, OneScanAgainstThePoseThenBlindOnesIsNotEnough) {
-  const ScanEvidence good{100, 0, 2, {}}, wrong{0, 0, 20, {}}, blind{};
+  const ScanEvidence good = counts(100, 0, 2), wrong = counts(0, 0, 20), blind{};
   LostDetectorOptions o;
   o.hold_against = 2;
   LostDetector d(o);
