@@ -27,6 +27,14 @@ struct RoomScan {
   const Pose at{10, 3, 0};
   std::vector<double> ranges = std::vector<double>(beams.size());
   RoomScan() { caster.cast_scan(at.point(), at.theta, beams, ranges.data()); }
+  // The scan with a straight front `metres` ahead (a wall the map lacks, or a row of
+  // people) across the beams within 1 rad of ahead, where it is nearer than the room.
+  std::vector<double> with_front_at(double metres) const {
+    std::vector<double> s = ranges;
+    for (size_t j = 0; j < beams.size(); ++j)
+      if (std::fabs(beams[j]) < 1.0) s[j] = std::min(s[j], metres / std::cos(beams[j]));
+    return s;
+  }
 };
 
 // Evidence of beam counts alone: no pieces nor scan kept, as from a detector that does
@@ -68,10 +76,9 @@ TEST(ScanAgreement, CountsTheBeamsWithinTheTolerance) {
 // the pose (unmapped_walls.h): a wall 2 m ahead that the map does not hold (the end of a
 // look-alike corridor) does; a person, or the same wall when the option is off, does not.
 TEST(ScanAgreement, AWallTheMapLacksCountsAgainstThePose) {
-  const auto [room, caster, beams, at, ranges] = RoomScan();
-  std::vector<double> wall = ranges;
-  for (size_t j = 0; j < beams.size(); ++j)
-    if (std::fabs(beams[j]) < 1.0) wall[j] = std::min(wall[j], 2.0 / std::cos(beams[j]));
+  const RoomScan r;
+  const auto& [room, caster, beams, at, ranges] = r;
+  const std::vector<double> wall = r.with_front_at(2.0);
   EXPECT_LT(scan_agreement(caster, at, beams, wall), 0.7);
   LostDetectorOptions off;
   off.count_unmapped_walls = false;
@@ -88,10 +95,9 @@ TEST(ScanAgreement, AWallTheMapLacksCountsAgainstThePose) {
 // The wall's returns come back in the laser's frame, one run of beams: what the detector
 // compares with the next scan's (unmapped_wall_persistence), and only for it.
 TEST(ScanEvidence, PlacesTheReturnsOnAWallTheMapLacks) {
-  const auto [room, caster, beams, at, ranges] = RoomScan();
-  std::vector<double> wall = ranges;
-  for (size_t j = 0; j < beams.size(); ++j)
-    if (std::fabs(beams[j]) < 1.0) wall[j] = std::min(wall[j], 2.0 / std::cos(beams[j]));
+  const RoomScan r;
+  const auto& [room, caster, beams, at, ranges] = r;
+  const std::vector<double> wall = r.with_front_at(2.0);
   LostDetectorOptions o;
   o.unmapped_wall_persistence = 0.1;
   const ScanEvidence e = scan_evidence(caster, at, beams, wall, o);
@@ -129,10 +135,7 @@ TEST(LostDetector, AWallTheMapLacksCountsOnceItStaysWherePeopleWalkOn) {
     o.unmapped_wall_persistence = persistence;
     o.unmapped_wall_seen_through = 0;  // the walls appear where the room was seen: apart below
     const auto scan_with_front_at = [&r, &o](double metres) {
-      std::vector<double> s = r.ranges;
-      for (size_t j = 0; j < r.beams.size(); ++j)
-        if (std::fabs(r.beams[j]) < 1.0) s[j] = std::min(s[j], metres / std::cos(r.beams[j]));
-      return scan_evidence(r.caster, r.at, r.beams, s, o);
+      return scan_evidence(r.caster, r.at, r.beams, r.with_front_at(metres), o);
     };
     const ScanEvidence good = scan_evidence(r.caster, r.at, r.beams, r.ranges, o);
     ASSERT_EQ(good.against, 0u);
@@ -170,10 +173,7 @@ TEST(LostDetector, AWallTheMapLacksDoesNotCountWhereAnEarlierScanSawThroughIt) {
     LostDetectorOptions o;
     o.unmapped_wall_seen_through = seen_through;
     const auto scan_with_front_at = [&r, &o](double metres) {
-      std::vector<double> s = r.ranges;
-      for (size_t j = 0; j < r.beams.size(); ++j)
-        if (std::fabs(r.beams[j]) < 1.0) s[j] = std::min(s[j], metres / std::cos(r.beams[j]));
-      return scan_evidence(r.caster, r.at, r.beams, s, o);
+      return scan_evidence(r.caster, r.at, r.beams, r.with_front_at(metres), o);
     };
     const ScanEvidence good = scan_evidence(r.caster, r.at, r.beams, r.ranges, o);
     const ScanEvidence blind = scan_evidence(r.caster, r.at, r.beams, std::vector<double>(r.beams.size(), 0.3), o);
