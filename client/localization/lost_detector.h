@@ -7,11 +7,12 @@
 // on the sensor model's scale: the scan's agreement with rays cast from the estimate. A
 // beam stopped short is explained by what the map does not hold (people, clutter: seed
 // 000 eq. 5's uniform term) and is left out, unless it lies on a straight wall longer
-// than people (unmapped_walls.h), which the pose should explain; of the others, the
-// share within `tolerance` of the cast range agree, and those that pass through a wall
-// of the map do not. Measured on GDC1 (bench-localization --kidnaps): tracking with 10
-// people per scan, p5 0.75; kidnapped, median 0.3. The absolute share of matching beams
-// falls to 0.45 in the median with 10 people while tracking, as low as a kidnapped robot's.
+// than people (unmapped_walls.h) that no earlier scan saw through, which the pose should
+// explain; of the others, the share within `tolerance` of the cast range agree, and
+// those that pass through a wall of the map do not. Measured on GDC1 (bench-localization
+// --kidnaps): tracking with 10 people per scan, p5 0.75; kidnapped, median 0.3. The
+// absolute share of matching beams falls to 0.45 in the median with 10 people while
+// tracking, as low as a kidnapped robot's.
 // The slow average learns a place's usual level (glass, doors the map has closed), so
 // only a drop well below it, lasting `hold` updates, says lost.
 //
