@@ -60,7 +60,8 @@ ScanEvidence scan_evidence(const RayCaster& caster, const Pose& pose, const std:
 bool LostDetector::seen_through(Point p) const {
   for (const Remembered& scan : previous_) {
     const std::vector<double>& beams = scan.beams;
-    if (beams.size() < 2) continue;
+    // Evidence built by hand may hold no scan, or readings that do not match its beams.
+    if (beams.size() < 2 || scan.ranges.size() != beams.size()) continue;
     const Odometry local = between(scan.at, Pose{p.x, p.y, 0});
     const double bearing = std::atan2(local.dy, local.dx);
     const double range = std::hypot(local.dx, local.dy);

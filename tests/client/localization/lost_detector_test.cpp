@@ -199,6 +199,25 @@ TEST(LostDetector, AWallTheMapLacksDoesNotCountWhereAnEarlierScanSawThroughIt) {
   }
 }
 
+// Evidence built by hand whose readings do not match its beams is no scan to look
+// through: the next wall counts as from a detector that remembers nothing, and nothing is
+// read past the readings' end.
+TEST(LostDetector, EvidenceWithReadingsThatDoNotMatchItsBeamsIsNotLookedThrough) {
+  const RoomScan r;
+  LostDetectorOptions o;
+  ASSERT_GT(o.unmapped_wall_seen_through, 0);
+  ScanEvidence broken = scan_evidence(r.caster, r.at, r.beams, r.ranges, o);
+  broken.ranges.resize(3, 20.0);  // three readings far beyond any wall, for 131 beams
+  const ScanEvidence wall = scan_evidence(r.caster, r.at, r.beams, r.with_front_at(2.0), o);
+  ASSERT_GT(wall.against, 0u);
+  LostDetector d(o);
+  for (int i = 0; i < 30; ++i) d.update(broken);
+  int said = -1;
+  for (int k = 0; k < 8 && said < 0; ++k)
+    if (d.update(wall)) said = k;
+  EXPECT_EQ(said, o.hold - 1);
+}
+
 // Beams that read nothing where the map has nothing within range are counted apart: with
 // a laser whose range is the median wall's in the room, every beam whose wall lies beyond
 // it (less the tolerance). The count comes from a caster of 15 m, not from the one scored.
