@@ -287,12 +287,6 @@ int main(int argc, char** argv) {
                  "scans, may say it; the baseline of 2 or more is 1)")
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
-  app.add_option("--lost-wall-persistence", s.lost.unmapped_wall_persistence,
-                 "metres: a straight piece the map lacks counts against the pose only where it stood within this of "
-                 "the pieces of the last --lost-wall-memory scans, moved by the odometry (the lost detector; 0: from "
-                 "its first scan; the baseline of one above 0 is 0)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 5.0));
   app.add_option("--lost-wall-seen-through", s.lost.unmapped_wall_seen_through,
                  "metres: a straight piece the map lacks does not count against the pose where a beam of one of the "
                  "last --lost-wall-memory scans, moved by the odometry, read this much farther (the lost detector; 0: "
@@ -300,8 +294,7 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(0.0, 5.0));
   app.add_option("--lost-wall-memory", s.lost.unmapped_wall_memory,
-                 "earlier scans whose straight pieces a piece may match, or whose beams may see through it "
-                 "(--lost-wall-persistence, --lost-wall-seen-through)")
+                 "earlier scans whose beams may see through a straight piece the map lacks (--lost-wall-seen-through)")
       ->capture_default_str()
       ->check(CLI::Range(1, 100));
   app.add_option("--drive", s.drive, "metres of the tracking drive")->capture_default_str();

@@ -5,7 +5,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include "common/geometry/segment_distance.h"
 
 namespace fleetmap::localization {
 
@@ -31,7 +30,7 @@ ScanEvidence scan_evidence(const RayCaster& caster, const Pose& pose, const std:
                                     : std::vector<int>(beams.size(), 0);
   // The pieces' places, for a detector that compares them across scans (only then: this
   // runs on every scan).
-  const bool place_walls = options.unmapped_wall_persistence > 0 || options.unmapped_wall_seen_through > 0;
+  const bool place_walls = options.unmapped_wall_seen_through > 0;
   const double open_beyond = caster.options().rmax - tolerance;
   for (size_t j = 0; j < beams.size(); ++j) {
     const double d = ranges[j] - cast[j];
@@ -50,7 +49,7 @@ ScanEvidence scan_evidence(const RayCaster& caster, const Pose& pose, const std:
       ++e.against;
     }
   }
-  if (options.unmapped_wall_seen_through > 0) {
+  if (place_walls) {
     e.beams = beams;
     e.ranges = ranges;
   }
@@ -78,41 +77,21 @@ bool LostDetector::seen_through(Point p) const {
 }
 
 size_t LostDetector::fleeting_wall_returns(const ScanEvidence& evidence) {
-  // Every scan's pieces are kept where the odometry alone places them, so that earlier
-  // ones need not move as the robot does.
-  Remembered now{{}, odometry_pose_, evidence.beams, evidence.ranges};
-  now.walls.reserve(evidence.unmapped_walls.size());
-  for (const std::vector<Point>& piece : evidence.unmapped_walls) {
-    now.walls.emplace_back();
-    now.walls.back().reserve(piece.size());
-    for (const Point p : piece) now.walls.back().push_back(compose(odometry_pose_, Odometry{p.x, p.y, 0}).point());
-  }
-  const double d2 = options_.unmapped_wall_persistence * options_.unmapped_wall_persistence;
-  const auto stood = [&](Point p) {
-    for (const Remembered& scan : previous_)
-      for (const std::vector<Point>& run : scan.walls)
-        for (size_t i = 0; i < run.size(); ++i)
-          if (point_segment_distance2(p, run[i], run[std::min(i + 1, run.size() - 1)]) <= d2) return true;
-    return false;
-  };
-  const auto seen = [&](Point p) { return seen_through(p); };
+  // Every scan is kept where the odometry alone places it, so that earlier ones need not
+  // move as the robot does; a piece is judged whole (half or more of its returns).
   size_t fleeting = 0;
-  for (const std::vector<Point>& piece : now.walls) {
-    // Twice the returns that pass `test`, to compare with the piece's size (half or more).
-    const auto twice = [&piece](auto&& test) {
-      return 2 * static_cast<size_t>(std::count_if(piece.begin(), piece.end(), test));
-    };
-    if ((options_.unmapped_wall_persistence > 0 && twice(stood) < piece.size()) ||
-        (options_.unmapped_wall_seen_through > 0 && twice(seen) >= piece.size()))
+  for (const std::vector<Point>& piece : evidence.unmapped_walls) {
+    const auto seen = [this](Point p) { return seen_through(compose(odometry_pose_, Odometry{p.x, p.y, 0}).point()); };
+    if (2 * static_cast<size_t>(std::count_if(piece.begin(), piece.end(), seen)) >= piece.size())
       fleeting += piece.size();
   }
-  previous_.push_back(std::move(now));
+  previous_.push_back(Remembered{odometry_pose_, evidence.beams, evidence.ranges});
   while (previous_.size() > options_.unmapped_wall_memory) previous_.pop_front();
   return fleeting;
 }
 
 bool LostDetector::update(const ScanEvidence& evidence, const Odometry& moved) {
-  if (!compares_walls()) return update_counts(evidence);
+  if (options_.unmapped_wall_seen_through <= 0) return update_counts(evidence);
   odometry_pose_ = compose(odometry_pose_, moved);
   const size_t fleeting = fleeting_wall_returns(evidence);
   ScanEvidence counts;

@@ -87,20 +87,11 @@ struct LostDetectorOptions {
   // 30 people it said 3 fewer of 64 kidnaps on GDC1 within 3 s, one of them not at all
   // (docs/localization.md, "A second scan against the pose"), so it stays 1.
   int hold_against = 1;
-  // A straight piece counts against the pose only where it stood in an earlier scan too:
-  // half or more of its returns within this many metres of the pieces of the last
-  // unmapped_wall_memory scans, moved by the odometry (not by the estimate, which a
-  // kidnapped robot's cloud shifts from scan to scan). A wall the map lacks stays where it
-  // is; people walk (1 m/s, 0.2 m between scans), so a row of them whose fronts read as a
-  // wall for one scan has left that line by the next. 0: every piece counts from its
-  // first scan. Off: among 30 people 0.1 m removed the one "lost" of a right pose in 4 h,
-  // but robots walled in by the crowd glimpse a wall once in seconds, and 4 of 64 kidnaps
-  // on GDC1 were said after 3 s, one never (docs/localization.md, "Walls that stand").
-  double unmapped_wall_persistence = 0;
   size_t unmapped_wall_memory = 5;  // about a second: a crowd may hide a wall for a scan or two
   // A straight piece counts against the pose unless one of the last unmapped_wall_memory
   // scans saw through where it stands: half or more of its returns lie where a beam of
-  // that scan, placed by the odometry, read more than this many metres farther. A wall
+  // that scan, placed by the odometry (not by the estimate, which a kidnapped robot's
+  // cloud shifts from scan to scan), read more than this many metres farther. A wall
   // stops every beam that meets it; people step into beams that passed their place a
   // moment before. A piece that no earlier scan could see past (a robot walled in by a
   // crowd, its earlier scans blind) counts from its first scan, as with 0 (off). Among 30
@@ -108,7 +99,9 @@ struct LostDetectorOptions {
   // had been seen through 1 s before. The kidnaps said within 3 s were the same
   // as with 0, on 4 seeds per map (docs/localization.md, "Walls seen through"). 0.3 m:
   // over 3 sigma of the laser's noise, and over a person's step towards the laser between
-  // two scans.
+  // two scans. (A piece counted only once it stood in an earlier scan, tried before this,
+  // cost kidnaps among 30 people: a robot walled in glimpses a wall once in seconds;
+  // docs/localization.md, "Walls that stand".)
   double unmapped_wall_seen_through = 0.3;
 };
 
@@ -119,11 +112,10 @@ struct ScanEvidence {
   size_t against = 0;  // past a wall of the map, or stopped short on a wall it lacks
   // The returns stopped short on a wall the map lacks (counted in `against`), in the
   // laser's frame (x ahead, y to the left): one straight piece each, whose beams need not
-  // be consecutive (unmapped_wall_pieces: those grazing it lie between). Filled only
-  // for a detector that compares them (unmapped_wall_persistence or _seen_through > 0).
+  // be consecutive (unmapped_wall_pieces: those grazing it lie between). With the scan
+  // itself (beam angles, readings), to look through at the next scans' pieces; all
+  // filled only for a detector that does (unmapped_wall_seen_through > 0).
   std::vector<std::vector<Point>> unmapped_walls;
-  // The scan itself (beam angles, readings), for a detector that looks through it at the
-  // next scans' pieces (unmapped_wall_seen_through > 0); empty otherwise.
   std::vector<double> beams, ranges;
   // The beams that tell, an open beam counting as open_weight of one.
   double telling(double open_weight) const {
@@ -153,7 +145,7 @@ class LostDetector {
   // One scan's agreement; returns lost().
   bool update(double agreement);
   // One scan's evidence: its share, unless fewer than min_telling_beams tell. `moved`: the
-  // odometry since the previous scan (unmapped_wall_persistence compares their walls).
+  // odometry since the previous scan (unmapped_wall_seen_through places earlier scans by it).
   bool update(const ScanEvidence& evidence, const Odometry& moved = {});
   bool lost() const { return lost_; }
   // After a new initialisation (global or the operator's pose): forget the averages.
@@ -169,25 +161,19 @@ class LostDetector {
   // update(evidence) once the fleeting walls are taken out of it.
   bool update_counts(const ScanEvidence& evidence);
   // Of the evidence's wall returns (the laser's frame at odometry_pose_), those on pieces
-  // that stood in none of the last scans (unmapped_wall_persistence) or that one of them
-  // saw through (unmapped_wall_seen_through); remembers the scan for the next.
+  // that one of the last scans saw through; remembers the scan for the next.
   size_t fleeting_wall_returns(const ScanEvidence& evidence);
   // Whether a beam of an earlier scan read more than unmapped_wall_seen_through past `p`
   // (the odometry's frame).
   bool seen_through(Point p) const;
-  bool compares_walls() const {
-    return options_.unmapped_wall_persistence > 0 || options_.unmapped_wall_seen_through > 0;
-  }
 
   LostDetectorOptions options_;
   double fast_ = 0, slow_ = 0;
   int updates_ = 0, below_ = 0, against_below_ = 0;
   bool lost_ = false;
   Pose odometry_pose_;  // the odometry summed since reset(): the frame previous_ is in
-  // One earlier scan, placed by the odometry: its pieces, and where it was taken with what
-  // it read (these only for unmapped_wall_seen_through).
+  // One earlier scan, placed by the odometry: where it was taken, and what it read.
   struct Remembered {
-    std::vector<std::vector<Point>> walls;
     Pose at;
     std::vector<double> beams, ranges;
   };

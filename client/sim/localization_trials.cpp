@@ -571,9 +571,6 @@ void report_kidnap(std::FILE* out, const Map& map, std::shared_ptr<const RayCast
   if (s.kidnaps > 0 && s.lost.hold_against > 1)
     detection_baseline("one scan below the floor, then blind ones, enough to say lost (--lost-hold-against 1)",
                        [](LostDetectorOptions& o) { o.hold_against = 1; });
-  if (s.kidnaps > 0 && s.lost.unmapped_wall_persistence > 0)
-    detection_baseline("a wall the map lacks counted from its first scan (--lost-wall-persistence 0)",
-                       [](LostDetectorOptions& o) { o.unmapped_wall_persistence = 0; });
   if (s.kidnaps > 0 && s.lost.unmapped_wall_seen_through > 0)
     detection_baseline("a wall the map lacks counted though an earlier scan saw through it (--lost-wall-seen-through 0)",
                        [](LostDetectorOptions& o) { o.unmapped_wall_seen_through = 0; });

@@ -92,14 +92,15 @@ TEST(ScanAgreement, AWallTheMapLacksCountsAgainstThePose) {
   EXPECT_DOUBLE_EQ(scan_agreement(caster, at, beams, person), 1.0);
 }
 
-// The wall's returns come back in the laser's frame, one run of beams: what the detector
-// compares with the next scan's (unmapped_wall_persistence), and only for it.
+// The wall's returns come back in the laser's frame, one piece, with the scan as it was
+// read: what the detector looks through at the next scans' pieces
+// (unmapped_wall_seen_through), and only for it.
 TEST(ScanEvidence, PlacesTheReturnsOnAWallTheMapLacks) {
   const RoomScan r;
   const auto& [room, caster, beams, at, ranges] = r;
   const std::vector<double> wall = r.with_front_at(2.0);
   LostDetectorOptions o;
-  o.unmapped_wall_persistence = 0.1;
+  o.unmapped_wall_seen_through = 0.3;
   const ScanEvidence e = scan_evidence(caster, at, beams, wall, o);
   ASSERT_EQ(e.unmapped_walls.size(), 1u);
   EXPECT_EQ(e.unmapped_walls[0].size(), e.against);
@@ -115,50 +116,8 @@ TEST(ScanEvidence, PlacesTheReturnsOnAWallTheMapLacks) {
   EXPECT_TRUE(plain.unmapped_walls.empty());
   EXPECT_TRUE(plain.beams.empty() && plain.ranges.empty());
   // One that looks through earlier scans keeps this one as it was read.
-  o.unmapped_wall_persistence = 0;
-  o.unmapped_wall_seen_through = 0.3;
-  const ScanEvidence kept = scan_evidence(caster, at, beams, wall, o);
-  EXPECT_EQ(kept.unmapped_walls.size(), 1u);
-  EXPECT_EQ(kept.beams, beams);
-  EXPECT_EQ(kept.ranges, wall);
-}
-
-// A wall the map lacks stands where it stood; a row of people whose fronts read as one
-// walks on (0.2 m between scans at 1 m/s). With unmapped_wall_persistence 0.1 m the wall
-// still says lost, from its second scan on, and the row never does; counted from its first
-// scan (0), the row says lost as the wall does. A row walking along its own line would
-// still count: this tells a wall from people who cross it, not from people who follow it.
-TEST(LostDetector, AWallTheMapLacksCountsOnceItStaysWherePeopleWalkOn) {
-  const RoomScan r;
-  for (double persistence : {0.1, 0.0}) {
-    LostDetectorOptions o;
-    o.unmapped_wall_persistence = persistence;
-    o.unmapped_wall_seen_through = 0;  // the walls appear where the room was seen: apart below
-    const auto scan_with_front_at = [&r, &o](double metres) {
-      return scan_evidence(r.caster, r.at, r.beams, r.with_front_at(metres), o);
-    };
-    const ScanEvidence good = scan_evidence(r.caster, r.at, r.beams, r.ranges, o);
-    ASSERT_EQ(good.against, 0u);
-    LostDetector standing(o), walking(o), approached(o);
-    for (int i = 0; i < 30; ++i) {
-      standing.update(good);
-      walking.update(good);
-      approached.update(good);
-    }
-    int said_standing = -1, said_walking = -1, said_approached = -1;
-    for (int k = 0; k < 8; ++k) {
-      if (standing.update(scan_with_front_at(2.0)) && said_standing < 0) said_standing = k;
-      if (walking.update(scan_with_front_at(3.0 - 0.2 * k)) && said_walking < 0) said_walking = k;
-      // The same scans as the row's, but the odometry says the robot drove 0.2 m towards
-      // what it sees: a wall that stands.
-      if (approached.update(scan_with_front_at(3.0 - 0.2 * k), Odometry{0.2, 0, 0}) && said_approached < 0)
-        said_approached = k;
-    }
-    const int first = persistence > 0 ? o.hold : o.hold - 1;  // one scan later: the first has no previous one
-    EXPECT_EQ(said_standing, first) << persistence;
-    EXPECT_EQ(said_approached, first) << persistence;
-    EXPECT_EQ(said_walking, persistence > 0 ? -1 : o.hold - 1) << persistence;
-  }
+  EXPECT_EQ(e.beams, beams);
+  EXPECT_EQ(e.ranges, wall);
 }
 
 // People step into beams that passed their place a moment before; a wall stops every beam
