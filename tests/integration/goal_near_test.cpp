@@ -129,7 +129,7 @@ TEST_F(GoalNear, ErrorsAndExitCodes) {
 // GetPath plans with the robot's profile among the scene, and sees an avoided area added
 // while the server runs.
 TEST_F(GoalNear, GetPathKeepsOutOfAvoidedAreas) {
-  ServerProcess server("--alive-period 0.5", "gn_server.log");
+  ServerProcess server(kQuietRobotFlags, "gn_server.log");
   SqlRobot robot("gn_r1", password_);
   robot.send("Ready", R"({"magic": 3})");
   ASSERT_EQ(robot.receive(2).size(), 2u);

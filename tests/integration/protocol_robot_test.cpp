@@ -26,10 +26,7 @@ class ReferenceRobot : public ::testing::Test {
     admin()->query("DELETE FROM env_objects WHERE source = 'observed' AND map_id = "
                    "(SELECT id FROM maps WHERE name = 'proto_map')").execute();
     admin()->query("DELETE FROM avoided_areas WHERE area_key = 'proto_late'").execute();
-    // The robot sends nothing between the steps of a test, and a step may be a sanitized
-    // CLI run on a loaded machine: it is declared lost only after a minute of silence,
-    // except where losing it is the point (start_server).
-    start_server("--alive-period 0.5 --lost-after 120");
+    start_server(kQuietRobotFlags);  // the silent robot's test starts its own, to lose it
     robot_ = std::make_unique<SqlRobot>("proto_r1", password_);
   }
   void start_server(const std::string& options) {

@@ -19,6 +19,11 @@ namespace fleetmap::test {
 // log_path; returns the child's pid.
 pid_t spawn_server(const std::string& flags, const std::string& log_path);
 
+// Flags for a server whose test robot sends nothing between the test's steps: Alive every
+// 0.5 s, yet lost only after a minute of silence, since a step may be a sanitized CLI run
+// on a loaded machine (a GetPath test once saw its robot lost and its task failed).
+inline constexpr const char* kQuietRobotFlags = "--alive-period 0.5 --lost-after 120";
+
 class ServerProcess {
  public:
   // Starts build/bin/fleetmap-server with extra flags; its log goes to a scratch file.

@@ -89,7 +89,7 @@ TEST_F(TopoPath, ALongGetPathCarriesTheGraphRouteAndIsClear) {
   // place (its whole-map RRT over 67 m of this floor can near its time limit on a busy
   // machine, bench-topo-path); the pose comes with SendPos, before GetPath.
   admin()->query("UPDATE robots SET x = NULL, y = NULL WHERE db_user = '" + std::string(kRobot) + "'").execute();
-  ServerProcess server("--alive-period 0.5", "tp_server.log");
+  ServerProcess server(kQuietRobotFlags, "tp_server.log");
   SqlRobot robot(kRobot, password_);
   robot.send("Ready", R"({"magic": 5})");
   ASSERT_EQ(robot.receive(2).size(), 2u);

@@ -282,7 +282,7 @@ class WebFeed : public WebHttp {
     const RunResult g = run("fleetmap", "map georef web_map 45.7 4.8");
     ASSERT_EQ(g.exit_code, 0) << g.err;
     robot_pw_ = add_robot("web_r1", "web_map");
-    server_ = std::make_unique<ServerProcess>("--alive-period 0.5", "web_server.log");
+    server_ = std::make_unique<ServerProcess>(kQuietRobotFlags, "web_server.log");
     robot_ = std::make_unique<SqlRobot>("web_r1", robot_pw_);
     robot_->send("Ready", R"({"magic": 7})");
     ASSERT_EQ(robot_->receive(2).size(), 2u);
