@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <utility>
-
 
 namespace fleetmap::localization {
 
@@ -28,8 +26,8 @@ ScanEvidence scan_evidence(const RayCaster& caster, const Pose& pose, const std:
   const std::vector<int> wall = options.count_unmapped_walls
                                     ? unmapped_wall_pieces(ranges, beams, stopped_short, options.unmapped_wall)
                                     : std::vector<int>(beams.size(), 0);
-  // The pieces' places, for a detector that compares them across scans (only then: this
-  // runs on every scan).
+  // The pieces' places and the scan, for a detector that looks through earlier scans at
+  // them (only then: this runs on every scan).
   const bool place_walls = options.unmapped_wall_seen_through > 0;
   const double open_beyond = caster.options().rmax - tolerance;
   for (size_t j = 0; j < beams.size(); ++j) {
@@ -79,9 +77,9 @@ bool LostDetector::seen_through(Point p) const {
 size_t LostDetector::fleeting_wall_returns(const ScanEvidence& evidence) {
   // Every scan is kept where the odometry alone places it, so that earlier ones need not
   // move as the robot does; a piece is judged whole (half or more of its returns).
+  const auto seen = [this](Point p) { return seen_through(compose(odometry_pose_, Odometry{p.x, p.y, 0}).point()); };
   size_t fleeting = 0;
   for (const std::vector<Point>& piece : evidence.unmapped_walls) {
-    const auto seen = [this](Point p) { return seen_through(compose(odometry_pose_, Odometry{p.x, p.y, 0}).point()); };
     if (2 * static_cast<size_t>(std::count_if(piece.begin(), piece.end(), seen)) >= piece.size())
       fleeting += piece.size();
   }
