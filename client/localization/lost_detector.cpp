@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace fleetmap::localization {
 
@@ -74,7 +75,7 @@ bool LostDetector::seen_through(Point p) const {
   return false;
 }
 
-size_t LostDetector::fleeting_wall_returns(const ScanEvidence& evidence) {
+size_t LostDetector::fleeting_wall_returns(ScanEvidence& evidence) {
   // Every scan is kept where the odometry alone places it, so that earlier ones need not
   // move as the robot does; a piece is judged whole (half or more of its returns).
   const auto seen = [this](Point p) { return seen_through(compose(odometry_pose_, Odometry{p.x, p.y, 0}).point()); };
@@ -83,12 +84,12 @@ size_t LostDetector::fleeting_wall_returns(const ScanEvidence& evidence) {
     if (2 * static_cast<size_t>(std::count_if(piece.begin(), piece.end(), seen)) >= piece.size())
       fleeting += piece.size();
   }
-  previous_.push_back(Remembered{odometry_pose_, evidence.beams, evidence.ranges});
+  previous_.push_back(Remembered{odometry_pose_, std::move(evidence.beams), std::move(evidence.ranges)});
   while (previous_.size() > options_.unmapped_wall_memory) previous_.pop_front();
   return fleeting;
 }
 
-bool LostDetector::update(const ScanEvidence& evidence, const Odometry& moved) {
+bool LostDetector::update(ScanEvidence evidence, const Odometry& moved) {
   if (options_.unmapped_wall_seen_through <= 0) return update_counts(evidence);
   odometry_pose_ = compose(odometry_pose_, moved);
   const size_t fleeting = fleeting_wall_returns(evidence);

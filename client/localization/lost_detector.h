@@ -146,7 +146,8 @@ class LostDetector {
   bool update(double agreement);
   // One scan's evidence: its share, unless fewer than min_telling_beams tell. `moved`: the
   // odometry since the previous scan (unmapped_wall_seen_through places earlier scans by it).
-  bool update(const ScanEvidence& evidence, const Odometry& moved = {});
+  // Taken by value: the detector keeps the scan it holds (a temporary is moved, not copied).
+  bool update(ScanEvidence evidence, const Odometry& moved = {});
   bool lost() const { return lost_; }
   // After a new initialisation (global or the operator's pose): forget the averages.
   void reset();
@@ -161,8 +162,9 @@ class LostDetector {
   // update(evidence) once the fleeting walls are taken out of it.
   bool update_counts(const ScanEvidence& evidence);
   // Of the evidence's wall returns (the laser's frame at odometry_pose_), those on pieces
-  // that one of the last scans saw through; remembers the scan for the next.
-  size_t fleeting_wall_returns(const ScanEvidence& evidence);
+  // that one of the last scans saw through; remembers the scan for the next (moved out of
+  // the evidence).
+  size_t fleeting_wall_returns(ScanEvidence& evidence);
   // Whether a beam of an earlier scan read more than unmapped_wall_seen_through past `p`
   // (the odometry's frame).
   bool seen_through(Point p) const;
