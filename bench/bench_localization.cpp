@@ -304,6 +304,12 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
   app.add_option("--people", s.laser.people, "unmodelled obstacles per scan")->capture_default_str();
+  double people_field_deg = 0;
+  app.add_option("--people-field", people_field_deg,
+                 "degrees around the robot's heading where the people stand and walk (0: the laser's field of view, "
+                 "every person in every scan; 360: all around the robot, only those in front reach the scans)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 360.0));
   app.add_flag("--exact-people", s.exact_people,
                "tell the filter which returns the simulated people stopped instead of letting it guess them "
                "(foreground.h): the ceiling of any people detector");
@@ -361,6 +367,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   s.look_around_turn = deg2rad(turn_deg);
+  s.laser.people_field = deg2rad(people_field_deg);
   s.false_alarm_drive = false_alarm_hours * 3600 / s.scan_period_s * DriveOptions{}.step;
   if (per_trial) s.per_trial = stdout;
   if (maps.empty()) maps = {real_map_path("GDC1.vectormap.txt"), real_map_path("UT_Campus.vectormap.txt")};

@@ -50,21 +50,30 @@ bool LaserSimulator::clear_of_people(Point c, double radius, const Person* self)
   return true;
 }
 
-bool LaserSimulator::in_view(const Pose& truth, const Person& p) const {
+double LaserSimulator::field() const {
+  return options_.people_field > 0 ? std::min(options_.people_field, 2 * kPi) : options_.fov;
+}
+
+size_t LaserSimulator::people_in_view(const Pose& truth) const {
+  return static_cast<size_t>(
+      std::count_if(people_.begin(), people_.end(), [&](const Person& p) { return within(truth, p, options_.fov); }));
+}
+
+bool LaserSimulator::within(const Pose& truth, const Person& p, double field) const {
   if (!(p.radius > 0)) return false;
   const Point oc = p.centre - truth.point();
   const double d = norm(oc);
   const double bearing = std::atan2(oc.y, oc.x);
-  if (std::fabs(angle_diff(bearing, truth.theta)) > options_.fov / 2) return false;
+  if (std::fabs(angle_diff(bearing, truth.theta)) > field / 2) return false;
   if (d - p.radius < options_.min_person_range || d + p.radius > rmax()) return false;
   return world_->cast(truth.point(), bearing) >= d;  // its centre in line of sight
 }
 
-bool LaserSimulator::place_in_view(const Pose& truth, Person& p) {
+bool LaserSimulator::place_in_field(const Pose& truth, Person& p) {
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   for (int a = 0; a < kPlaceAttempts; ++a) {
     const double radius = (options_.person_width + (2 * u01(rng_) - 1) * options_.person_width_spread) / 2;
-    const double bearing = truth.theta + (u01(rng_) - 0.5) * options_.fov;
+    const double bearing = truth.theta + (u01(rng_) - 0.5) * field();
     const double wall = world_->cast(truth.point(), bearing);
     const double lo = options_.min_person_range + radius, hi = std::min(wall, rmax()) - radius - kWallMargin;
     if (!(radius > 0) || hi <= lo) continue;
@@ -75,7 +84,7 @@ bool LaserSimulator::place_in_view(const Pose& truth, Person& p) {
     p.velocity = options_.person_speed * ray_direction(2 * kPi * u01(rng_));
     return true;
   }
-  p.radius = 0;  // nowhere to stand in view now (the laser against a wall): try next scan
+  p.radius = 0;  // nowhere to stand in the field now (the laser against a wall): try next scan
   return false;
 }
 
@@ -102,11 +111,11 @@ std::vector<double> LaserSimulator::scan(const Pose& truth) {
       Person unplaced;
       unplaced.radius = 0;  // in no one's way until placed
       people_.assign(static_cast<size_t>(options_.people), unplaced);
-      for (Person& p : people_) place_in_view(truth, p);
+      for (Person& p : people_) place_in_field(truth, p);
     } else {
       for (Person& p : people_) {
         walk(truth, p);
-        if (!in_view(truth, p)) place_in_view(truth, p);
+        if (!within(truth, p, field())) place_in_field(truth, p);
       }
     }
     std::vector<Point> dirs(beams_.size());

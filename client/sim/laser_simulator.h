@@ -15,6 +15,12 @@
 // meet the discs exactly and return the nearer of the disc and the wall, then get the
 // same noise.
 //
+// people_field widens where people are placed and kept beyond the laser's field of view:
+// 2 pi puts them all around the robot, in its line of sight and within range, as people
+// walking around a robot are, so that only those in front of it reach the scans (about
+// half, on the 180 degree laser). The default keeps every person in view: the harder
+// reading of "people in the scans", which the localization goals are measured against.
+//
 // Why people never overlap: bodies do not, at a laser's height. Four overlapping discs
 // side by side have fronts within 0.15 m of one line over 1.85 m, a straight piece no
 // real row of people shows (docs/localization.md, "People who do not overlap").
@@ -38,6 +44,7 @@ struct LaserSimulatorOptions {
   double min_person_range = 0.5;     // metres from the laser to a person's edge
   double person_speed = 1.0;         // metres per second, walking
   double scan_period = 0.2;          // seconds between scans (SimRobot's rate)
+  double people_field = 0;           // radians around the heading where people stand; 0: the fov
 };
 
 // One simulated person: a disc in map coordinates with a walking velocity.
@@ -59,15 +66,18 @@ class LaserSimulator {
 
   const std::vector<double>& beam_angles() const { return beams_; }
   double rmax() const { return world_->options().rmax; }
-  // The people of the last scan.
+  // The people of the last scan, and how many of them stood in the laser's view.
   const std::vector<Person>& people() const { return people_; }
+  size_t people_in_view(const Pose& truth) const;
 
  private:
   bool clear_of_walls(Point c, double radius) const;
   // No other person (than self) in the disc of centre c: discs may touch, not overlap.
   bool clear_of_people(Point c, double radius, const Person* self) const;
-  bool in_view(const Pose& truth, const Person& p) const;
-  bool place_in_view(const Pose& truth, Person& p);
+  // Within `field` radians around the heading, the range and the line of sight.
+  bool within(const Pose& truth, const Person& p, double field) const;
+  bool place_in_field(const Pose& truth, Person& p);
+  double field() const;  // people_field, or the fov when unset
   void walk(const Pose& truth, Person& p);
 
   std::shared_ptr<const RayCaster> world_;

@@ -390,8 +390,7 @@ struct TrackedRobot {
     if (s_.laser.people > 0) {
       const std::vector<uint8_t> stopped = people_returns(laser_, st.truth, scan);
       hidden_ = static_cast<size_t>(std::count(stopped.begin(), stopped.end(), 1));
-      in_view_ = static_cast<size_t>(std::count_if(laser_.people().begin(), laser_.people().end(),
-                                                   [](const Person& p) { return p.radius > 0; }));
+      in_view_ = laser_.people_in_view(st.truth);
     }
     update_filter(*filter_, scan, compass_reading(st.truth, s_.compass_sd, filter_->options().compass_half_width, rng_),
                   told_people(laser_, s_, st.truth, scan));

@@ -129,6 +129,45 @@ TEST(LaserSimulator, PeopleAreHumanSizedInViewClearOfWallsAndWalk) {
   EXPECT_GT(walked, compared / 2);
 }
 
+TEST(LaserSimulator, PeopleAllAroundStandBehindTheLaserToo) {
+  // people_field 360 degrees: the people stand all around the robot (in its line of sight,
+  // within range), many behind the 180 degree laser, and people_in_view counts those in
+  // front. The default keeps every person in view.
+  const auto world = room_caster();
+  LaserSimulatorOptions around;
+  around.people = 10;
+  around.people_field = 2 * kPi;
+  LaserSimulatorOptions in_view = around;
+  in_view.people_field = 0;
+  LaserSimulator all_around(world, around, 3), in_front(world, in_view, 3);
+  size_t placed = 0, behind = 0, shortened = 0;
+  for (int k = 0; k < 100; ++k) {
+    const Pose robot{9 + 0.02 * k, 3, 0.03 * k};  // open floor on every side, within a few metres of walls
+    const std::vector<double> truth = all_around.true_scan(robot);
+    const std::vector<double> scan = all_around.scan(robot);
+    size_t front = 0;
+    for (const Person& q : all_around.people()) {
+      if (!(q.radius > 0)) continue;
+      ++placed;
+      const Point rel = q.centre - robot.point();
+      EXPECT_LE(norm(rel) + q.radius, 15.0);
+      EXPECT_GE(world->cast(robot.point(), std::atan2(rel.y, rel.x)), norm(rel)) << "out of the robot's sight";
+      if (std::fabs(angle_diff(std::atan2(rel.y, rel.x), robot.theta)) > kPi / 2) ++behind;
+      else ++front;
+    }
+    EXPECT_EQ(all_around.people_in_view(robot), front);
+    for (size_t j = 0; j < scan.size(); ++j) shortened += scan[j] < truth[j] - 0.3;
+    in_front.scan(robot);
+    EXPECT_EQ(in_front.people_in_view(robot),
+              static_cast<size_t>(std::count_if(in_front.people().begin(), in_front.people().end(),
+                                                [](const Person& q) { return q.radius > 0; })));
+  }
+  EXPECT_GT(placed, 900u);                   // the field has room for the crowd
+  EXPECT_GT(behind, placed / 4);             // many stand behind the laser
+  EXPECT_LT(behind, 3 * placed / 4);         // and many in front
+  EXPECT_GT(shortened, 100u);                // those in front reach the scans
+}
+
 TEST(LaserSimulator, PeopleNeverOverlap) {
   // Bodies do not overlap at a laser's height: overlapping discs side by side make a
   // straight front that no real row of people shows. A crowd of 30 in a 20 m x 10 m room,
