@@ -767,6 +767,11 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
       b.exact_people = false;
       baseline("the people guessed by the filter (foreground.h)", b);
     }
+    if (s.laser.people_field > 0 && s.laser.people > 0) {
+      TrialSettings b = s;
+      b.laser.people_field = 0;
+      baseline("every person in the laser's view in every scan (--people-field 0)", b);
+    }
     if (f.ambiguity.drop_ruled_out_rivals) {
       TrialSettings b = s;
       b.filter.ambiguity.drop_ruled_out_rivals = false;
