@@ -94,6 +94,7 @@ struct GlobalRun {
   int search_rank = -2;                            // likewise
   size_t beams_hidden = 0, beams_seen = 0;         // likewise: beams a person stopped, of all
   std::vector<Pose> path;                          // the truth at each update (twin_places.h)
+  PeopleInPath people;                             // with people and twins: what they stopped
   std::vector<Pose> verdict_places;                // the last verdict's places (at the last scan)
   double explain_seconds = 0;                      // spent on explain's fits: not localization
 };
@@ -137,8 +138,12 @@ GlobalRun run_global_localization(const Map& map, std::shared_ptr<const RayCaste
     run.path.push_back(truth);
     const std::vector<double> ranges = laser.scan(truth);
     // Cast once for both uses: the noiseless scan is a ray per beam.
-    const std::vector<uint8_t> stopped = s.explain && s.laser.people > 0 ? people_returns(laser, truth, ranges)
-                                                                          : told_people(laser, s, truth, ranges);
+    const bool crowd = (s.explain || s.twins) && s.laser.people > 0;
+    const std::vector<uint8_t> stopped = crowd ? people_returns(laser, truth, ranges) : told_people(laser, s, truth, ranges);
+    if (s.twins && s.laser.people > 0) {
+      run.people.stopped.push_back(stopped);
+      run.people.ranges.push_back(ranges);
+    }
     if (s.explain && s.laser.people > 0) {
       run.beams_hidden += std::count(stopped.begin(), stopped.end(), 1);
       run.beams_seen += ranges.size();
@@ -264,15 +269,30 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
       // The verdict's places, carried back to the start: a twin the oracle's search missed
       // is a twin all the same (the same noiseless comparison; not cached, as it depends
       // on the filter under test).
-      if (!tc.twin && run.verdict_places.size() >= 2 && !run.path.empty()) {
-        std::vector<Pose> also;
+      std::vector<Pose> also;
+      if (run.verdict_places.size() >= 2 && !run.path.empty()) {
         const Odometry back = between(run.path.back(), run.path.front());
         for (const Pose& p : run.verdict_places) also.push_back(compose(p, back));
+      }
+      if (!tc.twin && !also.empty()) {
         TwinOptions only;
         only.candidates = 0;
         const TwinCheck named = find_twin(*world, *twins->search, run.path, beams, fo.compass_half_width, only, also);
         if (named.mean_z2 < tc.mean_z2) tc = named;
         g.twin_named_by_verdict = tc.twin;
+      }
+      if (s.laser.people > 0) {
+        // Not cached: the people differ between the settings run on one map.
+        const TwinCheck crowd =
+            find_twin(*world, *twins->search, run.path, beams, fo.compass_half_width, {}, also, &run.people);
+        g.twin_in_crowd = crowd.twin ? 1 : 0;
+        g.twin_in_crowd_mean_z2 = crowd.mean_z2;
+        res.twins_in_crowd_checked = true;
+        if (crowd.twin) {
+          ++res.crowd_twin_starts;
+          res.crowd_twin_success += g.outcome == TrialOutcome::Success;
+          res.crowd_twin_ambiguous += g.outcome == TrialOutcome::Ambiguous;
+        }
       }
       g.twin = tc.twin ? 1 : 0;
       g.twin_place = tc.place;
@@ -314,6 +334,9 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
       std::fprintf(s.per_trial, "    %s: the other place that fits best, (%.2f, %.2f, %.1f deg), %.3f per beam\n",
                    g.twin_named_by_verdict ? "a twin (one of the verdict's places)" : g.twin ? "a twin" : "no twin", g.twin_place.x, g.twin_place.y, rad2deg(g.twin_place.theta),
                    g.twin_mean_z2);
+    if (s.per_trial && g.twin_in_crowd >= 0)
+      std::fprintf(s.per_trial, "    on what the people left to see: %s, %.3f per beam\n",
+                   g.twin_in_crowd ? "a twin" : "no twin", g.twin_in_crowd_mean_z2);
   }
   res.seconds = seconds_since(t0) - twin_seconds - explain_seconds;
   return res;
@@ -739,6 +762,13 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
                    g.twin_starts, g.trials, g.twin_ambiguous, g.twin_success, g.twin_wrong, g.success - g.twin_success,
                    g.ambiguous - g.twin_ambiguous, g.wrong - g.twin_wrong, 100.0 * g.right() / std::max(1, g.trials),
                    g.twins_named_by_verdict, 100.0 * (g.right() - g.twins_named_by_verdict) / std::max(1, g.trials));
+    if (g.twins_in_crowd_checked)
+      std::fprintf(out,
+                   "  twins on what the people left to see (on a beam a person stopped, only a wall in front of "
+                   "the person tells a place from the truth): %d of %d, on which ambiguous %d, success %d; right "
+                   "answers %.1f %% (%.1f %% on the map alone)\n",
+                   g.crowd_twin_starts, g.trials, g.crowd_twin_ambiguous, g.crowd_twin_success,
+                   100.0 * g.right_in_crowd() / std::max(1, g.trials), 100.0 * g.right() / std::max(1, g.trials));
     if (s.explain)
       std::fprintf(out,
                    "  out of bounds at the end: %d; the scans favour the estimate in %d (a wrong place fits them "
@@ -759,8 +789,12 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
       b.per_trial = nullptr;
       b.explain = false;
       const GlobalResult r = run_global_trials(map, world, b);
-      std::fprintf(out, "  baseline, %s: right answers %.1f %%; success %d, ambiguous %d, wrong %d of %d\n", what,
+      std::fprintf(out, "  baseline, %s: right answers %.1f %%; success %d, ambiguous %d, wrong %d of %d", what,
                    100.0 * r.right() / std::max(1, r.trials), r.success, r.ambiguous, r.wrong, r.trials);
+      if (r.twins_in_crowd_checked)
+        std::fprintf(out, "; twins on what the people left to see %d, right answers %.1f %%", r.crowd_twin_starts,
+                     100.0 * r.right_in_crowd() / std::max(1, r.trials));
+      std::fprintf(out, "\n");
     };
     if (s.exact_people && s.laser.people > 0) {
       TrialSettings b = s;
@@ -865,16 +899,17 @@ void print_table(std::FILE* out, const std::vector<TableRow>& rows) {
 void write_trials_csv(std::FILE* out, const std::vector<TableRow>& rows, uint64_t seed) {
   std::fprintf(out, "map,config,seed,trial,start_x,start_y,start_theta_deg,outcome,updates,within_from,places,"
                     "final_error_m,seconds,outcome_weight_rule,places_weight_rule,runner_up_gap,heaviest_gap,truth_fit,"
-                    "estimate_fit,search_rank,twin,twin_x,twin_y,twin_mean_z2,twin_named_by_verdict\n");
+                    "estimate_fit,search_rank,twin,twin_x,twin_y,twin_mean_z2,twin_named_by_verdict,twin_in_crowd,"
+                    "twin_in_crowd_mean_z2\n");
   for (const TableRow& r : rows)
     for (const GlobalTrial& t : r.result.per_trial)
-      std::fprintf(out, "%s,%s,%llu,%d,%.3f,%.3f,%.2f,%s,%d,%d,%zu,%.3f,%.3f,%s,%zu,%.4f,%.4f,%.4f,%.4f,%d,%d,%.3f,%.3f,%.4f,%d\n",
+      std::fprintf(out, "%s,%s,%llu,%d,%.3f,%.3f,%.2f,%s,%d,%d,%zu,%.3f,%.3f,%s,%zu,%.4f,%.4f,%.4f,%.4f,%d,%d,%.3f,%.3f,%.4f,%d,%d,%.4f\n",
                    r.map.c_str(),
                    r.config.c_str(), static_cast<unsigned long long>(seed), t.trial, t.start.x, t.start.y,
                    rad2deg(t.start.theta), to_string(t.outcome), t.updates, t.within_from, t.places, t.final_error,
                    t.seconds, to_string(t.outcome_weight_rule), t.places_weight_rule, t.runner_up_gap, t.heaviest_gap,
                    t.truth_fit, t.estimate_fit, t.search_rank, t.twin, t.twin_place.x, t.twin_place.y, t.twin_mean_z2,
-                   t.twin_named_by_verdict ? 1 : 0);
+                   t.twin_named_by_verdict ? 1 : 0, t.twin_in_crowd, t.twin_in_crowd_mean_z2);
 }
 
 }  // namespace fleetmap::localization

@@ -174,6 +174,10 @@ struct GlobalTrial {
   double twin_mean_z2 = NAN;
   // The twin is one of the verdict's places, which the oracle's own search missed.
   bool twin_named_by_verdict = false;
+  // With people (TrialSettings::twins): the same check on what the people left to see
+  // (twin_places.h, PeopleInPath): 1 twin, 0 not, -1 unchecked.
+  int twin_in_crowd = -1;
+  double twin_in_crowd_mean_z2 = NAN;
 };
 
 // Whom the scans favour in an explained trial: the estimate by more than `tie` per beam
@@ -201,6 +205,10 @@ struct GlobalResult {
   int twin_starts = 0, twin_success = 0, twin_ambiguous = 0, twin_wrong = 0;
   int twins_named_by_verdict = 0;  // GlobalTrial::twin_named_by_verdict (each one ambiguous)
   int right() const { return success - twin_success + twin_ambiguous; }
+  // The same, twins judged on what the people left to see (GlobalTrial::twin_in_crowd).
+  bool twins_in_crowd_checked = false;
+  int crowd_twin_starts = 0, crowd_twin_success = 0, crowd_twin_ambiguous = 0;
+  int right_in_crowd() const { return success - crowd_twin_success + crowd_twin_ambiguous; }
   std::vector<GlobalTrial> per_trial;
   std::vector<int> first_within;    // update at which the estimate first got within bounds
   std::vector<double> final_error;  // metres, per trial

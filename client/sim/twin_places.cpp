@@ -10,7 +10,7 @@ namespace fleetmap::localization {
 
 TwinCheck find_twin(const RayCaster& world, const GlobalSearch& search, const std::vector<Pose>& path,
                     const std::vector<double>& beam_angles, double half_width, const TwinOptions& options,
-                    const std::vector<Pose>& also) {
+                    const std::vector<Pose>& also, const PeopleInPath* people) {
   TwinCheck out;
   const size_t n = beam_angles.size();
   if (path.empty() || n == 0) return out;
@@ -45,8 +45,14 @@ TwinCheck find_twin(const RayCaster& world, const GlobalSearch& search, const st
     for (size_t u = 0; u < path.size(); ++u) {
       const Pose q = compose(p, relative[u]);
       world.cast_scan(q.point(), q.theta, beam_angles, cast.data());
+      const bool crowded = people && u < people->stopped.size();
       for (size_t j = 0; j < n; ++j) {
-        const double z = (cast[j] - truth[u][j]) / options.sigma;
+        double z = (cast[j] - truth[u][j]) / options.sigma;
+        if (crowded && people->stopped[u][j]) {
+          // Only a wall in front of the person tells this place from the truth.
+          const double reading = people->ranges[u][j];
+          z = cast[j] < reading ? (cast[j] - reading) / options.sigma : 0;
+        }
         sum += std::min(z * z, options.max_z2);
       }
     }

@@ -16,6 +16,7 @@
 // places a filter's verdict held, carried back to the start): the search's list is a
 // heuristic, and a twin it misses is a twin all the same.
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -44,12 +45,23 @@ struct TwinCheck {
   int tried = 0;  // candidates refined
 };
 
+// The beams people stopped along a trial's path, one entry per scan of the path. A
+// person hides the wall behind it, so on such a beam another place is told from the
+// truth only where its own wall stands in front of the person (the reading would then
+// be longer than that place allows); elsewhere both explain the reading alike.
+struct PeopleInPath {
+  std::vector<std::vector<uint8_t>> stopped;  // per beam: 1 where a person stopped it
+  std::vector<std::vector<double>> ranges;    // the readings, on those beams the person's
+};
+
 // path: the truth's pose at each scan of the trial, path[0] the start; beam_angles and
 // world's rmax as the laser's. half_width: the compass's interval either side of the
 // start's heading.
 // also: more candidate starts, tried after the search's.
+// people: given, the beams they stopped are compared as above (a twin on what the
+// people left to see); none, every beam on the map alone.
 TwinCheck find_twin(const RayCaster& world, const GlobalSearch& search, const std::vector<Pose>& path,
                     const std::vector<double>& beam_angles, double half_width, const TwinOptions& options = {},
-                    const std::vector<Pose>& also = {});
+                    const std::vector<Pose>& also = {}, const PeopleInPath* people = nullptr);
 
 }  // namespace fleetmap::localization

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -78,6 +79,40 @@ TEST(TwinPlaces, APlaceTheCallerNamesIsCheckedLikeTheSearchs) {
   EXPECT_FALSE(half.twin);
   EXPECT_EQ(half.tried, 1);
   EXPECT_FALSE(find_twin(*h.world, h.search, path, h.beams, deg2rad(3.0), only).twin);  // nothing to try
+}
+
+// People hide the walls behind them, so a place told from the start only by what they
+// hide is a twin among them; a place whose own walls or pillars would stand in front of
+// them is not.
+TEST(TwinPlaces, AmongPeopleOnlyWhatTheyLeaveToSeeTellsAPlace) {
+  const Hall h;
+  const Pose start{3.0, 2.0, deg2rad(35.0)};  // it sees the hall's corner: no twin on the map alone
+  const auto path = Hall::look_around(start);
+  TwinOptions only;
+  only.candidates = 0;
+  // One step of the pillars' grid along the diagonal: the same pillars around it, but the
+  // hall's walls 10 m and more away instead of 2-3 m.
+  const Pose diagonal{start.x + 8, start.y + 8, start.theta};
+  const Pose half{start.x + 4, start.y, start.theta};  // a pillar 2.2 m from it, none there from the start
+  ASSERT_FALSE(find_twin(*h.world, h.search, path, h.beams, deg2rad(3.0), only, {diagonal}).twin);
+  // A crowd 0.5 m in front of whatever each beam of the start meets, on every beam.
+  PeopleInPath crowd;
+  for (const Pose& p : path) {
+    std::vector<double> ranges(h.beams.size());
+    h.world->cast_scan(p.point(), p.theta, h.beams, ranges.data());
+    for (double& r : ranges) r -= 0.5;
+    crowd.ranges.push_back(ranges);
+    crowd.stopped.emplace_back(h.beams.size(), 1);
+  }
+  const TwinCheck hidden = find_twin(*h.world, h.search, path, h.beams, deg2rad(3.0), only, {diagonal}, &crowd);
+  EXPECT_TRUE(hidden.twin);
+  EXPECT_LT(hidden.mean_z2, 0.01);
+  const TwinCheck in_front = find_twin(*h.world, h.search, path, h.beams, deg2rad(3.0), only, {half}, &crowd);
+  EXPECT_FALSE(in_front.twin);
+  EXPECT_GT(in_front.mean_z2, 0.3);
+  // People on no beam: the map alone decides, as without them.
+  for (auto& s : crowd.stopped) std::fill(s.begin(), s.end(), 0);
+  EXPECT_FALSE(find_twin(*h.world, h.search, path, h.beams, deg2rad(3.0), only, {diagonal}, &crowd).twin);
 }
 
 TEST(TwinPlaces, NoPathOrNoBeamsHasNoTwin) {
