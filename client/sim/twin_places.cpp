@@ -39,16 +39,22 @@ TwinCheck find_twin(const RayCaster& world, const GlobalSearch& search, const st
                                             options.candidates))
       candidates.push_back(c.pose);
   candidates.insert(candidates.end(), also.begin(), also.end());
+  // A record of the people of another shape than the path's scans is left out: the map
+  // alone decides, rather than a read past its end.
+  const auto scans_of_path = [&](const auto& per_scan) {
+    return per_scan.size() == path.size() &&
+           std::all_of(per_scan.begin(), per_scan.end(), [&](const auto& scan) { return scan.size() == n; });
+  };
+  if (people && !(scans_of_path(people->stopped) && scans_of_path(people->ranges))) people = nullptr;
   std::vector<double> cast(n);
   auto mean_z2 = [&](const Pose& p) {
     double sum = 0;
     for (size_t u = 0; u < path.size(); ++u) {
       const Pose q = compose(p, relative[u]);
       world.cast_scan(q.point(), q.theta, beam_angles, cast.data());
-      const bool crowded = people && u < people->stopped.size();
       for (size_t j = 0; j < n; ++j) {
         double z = (cast[j] - truth[u][j]) / options.sigma;
-        if (crowded && people->stopped[u][j]) {
+        if (people && people->stopped[u][j]) {
           // Only a wall in front of the person tells this place from the truth.
           const double reading = people->ranges[u][j];
           z = cast[j] < reading ? (cast[j] - reading) / options.sigma : 0;

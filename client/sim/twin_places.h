@@ -59,7 +59,8 @@ struct PeopleInPath {
 // start's heading.
 // also: more candidate starts, tried after the search's.
 // people: given, the beams they stopped are compared as above (a twin on what the
-// people left to see); none, every beam on the map alone.
+// people left to see); none, or not one scan of every beam per pose of the path, every
+// beam on the map alone.
 TwinCheck find_twin(const RayCaster& world, const GlobalSearch& search, const std::vector<Pose>& path,
                     const std::vector<double>& beam_angles, double half_width, const TwinOptions& options = {},
                     const std::vector<Pose>& also = {}, const PeopleInPath* people = nullptr);

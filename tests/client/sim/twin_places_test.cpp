@@ -110,6 +110,11 @@ TEST(TwinPlaces, AmongPeopleOnlyWhatTheyLeaveToSeeTellsAPlace) {
   const TwinCheck in_front = find_twin(*h.world, h.search, path, h.beams, deg2rad(3.0), only, {half}, &crowd);
   EXPECT_FALSE(in_front.twin);
   EXPECT_GT(in_front.mean_z2, 0.3);
+  // A record missing a scan of the path is left out: the map alone decides, and nothing
+  // is read past its end.
+  PeopleInPath short_record = crowd;
+  short_record.ranges.pop_back();
+  EXPECT_FALSE(find_twin(*h.world, h.search, path, h.beams, deg2rad(3.0), only, {diagonal}, &short_record).twin);
   // People on no beam: the map alone decides, as without them.
   for (auto& s : crowd.stopped) std::fill(s.begin(), s.end(), 0);
   EXPECT_FALSE(find_twin(*h.world, h.search, path, h.beams, deg2rad(3.0), only, {diagonal}, &crowd).twin);
