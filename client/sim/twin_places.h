@@ -34,6 +34,10 @@ struct TwinOptions {
   // A twin when the mean term over every beam of the path is at most this: 0.1 is an
   // RMS difference of a third of the noise (1.6 cm at sigma 0.05 m).
   double twin_mean_z2 = 0.1;
+  // A near twin: not a twin, but no other place scores above this (an RMS difference
+  // under 0.7 of the noise, 3.5 cm at sigma 0.05 m). On the campus every start the filter
+  // missed was one or a twin (docs/localization.md, "The campus's misses are near twins").
+  double near_twin_mean_z2 = 0.5;
 };
 
 struct TwinCheck {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include "common/raycast/grid_ray_caster.h"
@@ -131,6 +132,28 @@ TEST(LocalizationTrials, KldOptionsReachTheTrialsFilter) {
   EXPECT_EQ(trial_filter(s, "seed").tracking_min_particles, 0u);
 }
 
+// A near twin is a checked start without a twin whose nearest other place scores at most
+// the line: a twin, an unchecked start or one without another place found is none.
+TEST(LocalizationTrials, ANearTwinIsNoTwinWithAnotherPlaceWithinTheLine) {
+  GlobalTrial t;
+  t.twin = 0;
+  t.twin_mean_z2 = 0.3;
+  EXPECT_TRUE(near_twin(t, 0.5));
+  t.twin_mean_z2 = 0.5;
+  EXPECT_TRUE(near_twin(t, 0.5));
+  t.twin_mean_z2 = 0.51;
+  EXPECT_FALSE(near_twin(t, 0.5));
+  t.twin_mean_z2 = std::numeric_limits<double>::infinity();  // no other place stayed 1 m away
+  EXPECT_FALSE(near_twin(t, 0.5));
+  t.twin_mean_z2 = 0.05;
+  t.twin = 1;
+  EXPECT_FALSE(near_twin(t, 0.5));
+  t.twin = -1;  // not checked
+  EXPECT_FALSE(near_twin(t, 0.5));
+  t.twin_mean_z2 = NAN;
+  EXPECT_FALSE(near_twin(t, 0.5));
+}
+
 // In a hall of pillars on a grid, starts with a twin (twin_places.h) are called ambiguous
 // once the filter scores the search's places it lost (AmbiguityOptions::rivals); without
 // them resampling leaves one of the two and reports it as the pose (6 of 11 on seed 4242).
@@ -156,6 +179,14 @@ TEST(LocalizationTrials, TwinStartsInAHallOfPillarsAreCalledAmbiguous) {
     else EXPECT_GT(g.twin_mean_z2, 0.1) << "trial " << g.trial;
   }
   EXPECT_EQ(on.right(), on.success - on.twin_success + on.twin_ambiguous);
+  int near = 0, near_ambiguous = 0;
+  for (const GlobalTrial& g : on.per_trial)
+    if (g.twin == 0 && g.twin_mean_z2 <= 0.5) {
+      ++near;
+      near_ambiguous += g.outcome == TrialOutcome::Ambiguous;
+    }
+  EXPECT_EQ(on.near_twin_starts, near);
+  EXPECT_EQ(on.right_near_either(), on.right() + near_ambiguous);
   t.s.filter.ambiguity.rivals = false;
   const GlobalResult off = run_global_trials(t.map, t.world, t.s);
   EXPECT_EQ(off.twin_starts, on.twin_starts);  // the oracle does not depend on the filter
