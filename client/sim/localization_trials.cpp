@@ -303,11 +303,6 @@ GlobalResult run_global_trials(const Map& map, std::shared_ptr<const RayCaster> 
         res.twin_ambiguous += g.outcome == TrialOutcome::Ambiguous;
         res.twin_wrong += g.outcome == TrialOutcome::Wrong;
         res.twins_named_by_verdict += g.twin_named_by_verdict;
-      } else if (near_twin(g, TwinOptions{}.near_twin_mean_z2)) {
-        ++res.near_twin_starts;
-        res.near_twin_success += g.outcome == TrialOutcome::Success;
-        res.near_twin_ambiguous += g.outcome == TrialOutcome::Ambiguous;
-        res.near_twin_wrong += g.outcome == TrialOutcome::Wrong;
       }
       twin_seconds += seconds_since(twin_t0);
     }
@@ -767,13 +762,15 @@ std::optional<GlobalResult> report_preset(std::FILE* out, const Map& map, std::s
                    g.twin_starts, g.trials, g.twin_ambiguous, g.twin_success, g.twin_wrong, g.success - g.twin_success,
                    g.ambiguous - g.twin_ambiguous, g.wrong - g.twin_wrong, 100.0 * g.right() / std::max(1, g.trials),
                    g.twins_named_by_verdict, 100.0 * (g.right() - g.twins_named_by_verdict) / std::max(1, g.trials));
-    if (g.twins_checked)
+    if (g.twins_checked) {
+      const NearTwins near = g.near_twins();
       std::fprintf(out,
                    "  near twins (no twin, but another place within an RMS of 0.7 of the noise): %d of %d, on which "
                    "success %d, ambiguous %d, wrong %d; with either the pose or \"ambiguous\" right on them (a "
                    "wrong pose still wrong): right answers %.1f %%\n",
-                   g.near_twin_starts, g.trials, g.near_twin_success, g.near_twin_ambiguous, g.near_twin_wrong,
-                   100.0 * g.right_near_either() / std::max(1, g.trials));
+                   near.starts, g.trials, near.success, near.ambiguous, near.wrong,
+                   100.0 * (g.right() + near.ambiguous) / std::max(1, g.trials));
+    }
     if (g.twins_in_crowd_checked)
       std::fprintf(out,
                    "  twins on what the people left to see (on a beam a person stopped, only a wall in front of "
@@ -855,6 +852,18 @@ Favoured favoured(const GlobalTrial& t, double tie) {
 }
 
 bool near_twin(const GlobalTrial& t, double line) { return t.twin == 0 && t.twin_mean_z2 <= line; }
+
+NearTwins GlobalResult::near_twins(double line) const {
+  NearTwins n;
+  for (const GlobalTrial& t : per_trial) {
+    if (!near_twin(t, line)) continue;
+    ++n.starts;
+    n.success += t.outcome == TrialOutcome::Success;
+    n.ambiguous += t.outcome == TrialOutcome::Ambiguous;
+    n.wrong += t.outcome == TrialOutcome::Wrong;
+  }
+  return n;
+}
 
 const char* to_string(Favoured f) {
   switch (f) {

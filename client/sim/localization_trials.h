@@ -191,6 +191,11 @@ const char* to_string(Favoured f);
 // `line` (TwinOptions::near_twin_mean_z2).
 bool near_twin(const GlobalTrial& t, double line);
 
+// The starts with a near twin and their outcomes.
+struct NearTwins {
+  int starts = 0, success = 0, ambiguous = 0, wrong = 0;
+};
+
 struct GlobalResult {
   // converged: within bounds at the end, whether or not ambiguous (the figure before the
   // ambiguity verdict); success + ambiguous + wrong = trials.
@@ -209,12 +214,12 @@ struct GlobalResult {
   int twin_starts = 0, twin_success = 0, twin_ambiguous = 0, twin_wrong = 0;
   int twins_named_by_verdict = 0;  // GlobalTrial::twin_named_by_verdict (each one ambiguous)
   int right() const { return success - twin_success + twin_ambiguous; }
-  // Starts with a near twin (TwinOptions::near_twin_mean_z2), no twin, and their outcomes.
-  // There the verdict, whose margin is the oracle's line, says the pose or "ambiguous" as
-  // the noise falls: right_near_either() counts either as right, a wrong pose still wrong
+  // Starts with a near twin (near_twin()), counted from per_trial. There the verdict,
+  // whose margin is the oracle's line, says the pose or "ambiguous" as the noise falls:
+  // right_near_either() counts either as right, a wrong pose still wrong
   // (docs/localization.md, "The campus's misses are near twins").
-  int near_twin_starts = 0, near_twin_success = 0, near_twin_ambiguous = 0, near_twin_wrong = 0;
-  int right_near_either() const { return right() + near_twin_ambiguous; }
+  NearTwins near_twins(double line = TwinOptions{}.near_twin_mean_z2) const;
+  int right_near_either() const { return right() + near_twins().ambiguous; }
   // The same, twins judged on what the people left to see (GlobalTrial::twin_in_crowd).
   bool twins_in_crowd_checked = false;
   int crowd_twin_starts = 0, crowd_twin_success = 0, crowd_twin_ambiguous = 0;

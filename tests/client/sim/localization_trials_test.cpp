@@ -154,6 +154,41 @@ TEST(LocalizationTrials, ANearTwinIsNoTwinWithAnotherPlaceWithinTheLine) {
   EXPECT_FALSE(near_twin(t, 0.5));
 }
 
+// The near twins are counted from the per-trial rows, by outcome, and only they add
+// to the right answer, by their ambiguous verdicts.
+TEST(LocalizationTrials, NearTwinsAreCountedByOutcomeAndOnlyTheirAmbiguousAddToTheRightAnswer) {
+  GlobalResult r;
+  const auto add = [&](int twin, double mean_z2, TrialOutcome outcome) {
+    GlobalTrial t;
+    t.twin = twin;
+    t.twin_mean_z2 = mean_z2;
+    t.outcome = outcome;
+    r.per_trial.push_back(t);
+    ++r.trials;
+    r.success += outcome == TrialOutcome::Success;
+    r.ambiguous += outcome == TrialOutcome::Ambiguous;
+    r.wrong += outcome == TrialOutcome::Wrong;
+    if (twin == 1) {
+      ++r.twin_starts;
+      r.twin_ambiguous += outcome == TrialOutcome::Ambiguous;
+    }
+  };
+  add(1, 0.05, TrialOutcome::Ambiguous);  // a twin: right, and no near twin
+  add(0, 0.3, TrialOutcome::Success);
+  add(0, 0.4, TrialOutcome::Ambiguous);
+  add(0, 0.45, TrialOutcome::Wrong);
+  add(0, 2.0, TrialOutcome::Ambiguous);  // far from any other place: wrong either way
+  add(-1, NAN, TrialOutcome::Success);
+  const NearTwins near = r.near_twins();
+  EXPECT_EQ(near.starts, 3);
+  EXPECT_EQ(near.success, 1);
+  EXPECT_EQ(near.ambiguous, 1);
+  EXPECT_EQ(near.wrong, 1);
+  EXPECT_EQ(r.right(), 3);              // the twin, and the two successes
+  EXPECT_EQ(r.right_near_either(), 4);  // and the near twin called ambiguous
+  EXPECT_EQ(r.near_twins(0.35).starts, 1);  // the line is the caller's
+}
+
 // In a hall of pillars on a grid, starts with a twin (twin_places.h) are called ambiguous
 // once the filter scores the search's places it lost (AmbiguityOptions::rivals); without
 // them resampling leaves one of the two and reports it as the pose (6 of 11 on seed 4242).
@@ -185,7 +220,7 @@ TEST(LocalizationTrials, TwinStartsInAHallOfPillarsAreCalledAmbiguous) {
       ++near;
       near_ambiguous += g.outcome == TrialOutcome::Ambiguous;
     }
-  EXPECT_EQ(on.near_twin_starts, near);
+  EXPECT_EQ(on.near_twins().starts, near);
   EXPECT_EQ(on.right_near_either(), on.right() + near_ambiguous);
   t.s.filter.ambiguity.rivals = false;
   const GlobalResult off = run_global_trials(t.map, t.world, t.s);
